@@ -1,0 +1,43 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   bond_style cell/neohookean: the cell-wall stiffness F^e and damping F^d (design.md section 1)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_BOND_CELL_NEOHOOKEAN_H
+#define LMP_BOND_CELL_NEOHOOKEAN_H
+
+#include "bond.h"
+
+namespace LAMMPS_NS {
+
+class BondCellNeoHookean : public Bond {
+ public:
+  BondCellNeoHookean(class LAMMPS *);
+  ~BondCellNeoHookean() override;
+  void compute(int, int) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double equilibrium_distance(int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_data(FILE *) override;
+  double single(int, double, int, int, double &) override;
+  void *extract(const char *, int &) override;
+
+  enum Law { NEOHOOKEAN = 0, LINEAR = 1 };
+
+ protected:
+  double *shear, *thickness, *gamma;    // G, t0, damping coefficient per bond type
+  int *law;
+  double *kappa;                        // G t0 / sqrt(3), precomputed per type
+  double *l0max;                        // longest rest length per type, for cutoff estimates
+  int ixref;                            // index of the per-atom reference positions (d2_xref 3)
+
+  void allocate();
+  double rest_length(int, int) const;
+  double stretch_force(int, double, double, double &) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,102 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   Plugin entry point: checks that the running LAMMPS is the one this plugin was compiled for,
+   then registers every cellsph style. A new style is one line in the table below.
+------------------------------------------------------------------------- */
+
+#include "lammpsplugin.h"
+
+#include "library.h"
+#include "lmptype.h"
+#include "version.h"
+
+#include "bond_cell_neohookean.h"
+
+#include <cstdio>
+#include <string>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+template <class Style> void *create_v1(void *lmp)
+{
+  return (void *) new Style((LAMMPS *) lmp);
+}
+
+template <class Style> void *create_v2(void *lmp, int narg, char **arg)
+{
+  return (void *) new Style((LAMMPS *) lmp, narg, arg);
+}
+
+struct StyleEntry {
+  const char *kind;    // pair, bond, fix, compute
+  const char *name;
+  const char *info;
+  lammpsplugin_factory1 *v1;    // pair and bond styles
+  lammpsplugin_factory2 *v2;    // fix and compute styles
+};
+
+const StyleEntry STYLES[] = {
+    {"bond", "cell/neohookean", "Neo-Hookean cell-wall bond with damping",
+     &create_v1<BondCellNeoHookean>, nullptr},
+};
+
+// why this LAMMPS cannot run this plugin, or an empty string if it can
+std::string abi_mismatch(void *lmp)
+{
+  const int running = lammps_version(lmp);
+  if (running != LMP_VERSION_NUM)
+    return "it was compiled for LAMMPS version " + std::to_string(LMP_VERSION_NUM) +
+        " but this LAMMPS is version " + std::to_string(running);
+  const struct {
+    const char *name;
+    int size;
+  } sizes[] = {{"bigint", (int) sizeof(bigint)},
+               {"tagint", (int) sizeof(tagint)},
+               {"imageint", (int) sizeof(imageint)}};
+  for (const auto &s : sizes) {
+    const int host = lammps_extract_setting(lmp, s.name);
+    if (host != s.size)
+      return std::string("integer size of ") + s.name + " is " + std::to_string(host) +
+          " bytes in LAMMPS but " + std::to_string(s.size) + " in the plugin";
+  }
+#if LMP_VERSION_NUM < 20230615
+#ifdef LAMMPS_EXCEPTIONS
+  const int plugin_exceptions = 1;
+#else
+  const int plugin_exceptions = 0;
+#endif
+  if (lammps_config_has_exceptions() != plugin_exceptions)
+    return std::string("LAMMPS was built ") + (plugin_exceptions ? "without" : "with") +
+        " -DLAMMPS_EXCEPTIONS and the plugin " + (plugin_exceptions ? "with" : "without");
+#endif
+  return "";
+}
+
+}    // namespace
+
+extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+{
+  const std::string why = abi_mismatch(lmp);
+  if (!why.empty()) {
+    fprintf(stderr, "ERROR: cellsph plugin not registered: %s. Rebuild it against this LAMMPS.\n",
+            why.c_str());
+    return;
+  }
+  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+  for (const StyleEntry &s : STYLES) {
+    lammpsplugin_t plugin;
+    plugin.version = LAMMPS_VERSION;
+    plugin.style = s.kind;
+    plugin.name = s.name;
+    plugin.info = s.info;
+    plugin.author = "cellsph developers";
+    if (s.v1)
+      plugin.creator.v1 = s.v1;
+    else
+      plugin.creator.v2 = s.v2;
+    plugin.handle = handle;
+    (*register_plugin)(&plugin, lmp);
+  }
+}
