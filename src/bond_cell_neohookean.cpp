@@ -8,6 +8,7 @@
 #include "bond_cell_neohookean.h"
 
 #include "atom.h"
+#include "cell_params.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -72,7 +73,9 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
     const double dely = x[i1][1] - x[i2][1];
     const double delz = x[i1][2] - x[i2][2];
     const double r = sqrt(delx * delx + dely * dely + delz * delz);
-    if (r == 0.0) error->one(FLERR, "Bond cell/neohookean: atoms {} and {} coincide", atom->tag[i1], atom->tag[i2]);
+    if (r == 0.0)
+      error->one(FLERR, "Bond cell/neohookean: atoms {} and {} coincide", atom->tag[i1],
+                 atom->tag[i2]);
 
     double fbond = -stretch_force(type, r, rest_length(i1, i2), ebond) / r;
 
@@ -152,34 +155,46 @@ void BondCellNeoHookean::allocate()
 
 /* ----------------------------------------------------------------------
    bond_coeff N G t0 gamma [law neohookean|linear]
+   bond_coeff N file <parameter file>     (keys wall_G, wall_t0, wall_gamma, optional wall_law)
 ------------------------------------------------------------------------- */
 
 void BondCellNeoHookean::coeff(int narg, char **arg)
 {
-  if (narg != 4 && narg != 6)
-    error->all(FLERR, "Incorrect args for bond_coeff cell/neohookean: expected "
-                      "'bond_coeff <type> <G> <t0> <gamma> [law neohookean|linear]', got {} args", narg);
   if (!allocated) allocate();
-
   int ilo, ihi;
+  if (narg < 1) error->all(FLERR, "Incorrect args for bond_coeff cell/neohookean");
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double g_one = utils::numeric(FLERR, arg[1], false, lmp);
-  const double t_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = utils::numeric(FLERR, arg[3], false, lmp);
-  if (g_one <= 0.0) error->all(FLERR, "Bond_coeff cell/neohookean: shear modulus G = {} must be > 0", g_one);
-  if (t_one <= 0.0) error->all(FLERR, "Bond_coeff cell/neohookean: wall thickness t0 = {} must be > 0", t_one);
-  if (gamma_one < 0.0) error->all(FLERR, "Bond_coeff cell/neohookean: damping gamma = {} must be >= 0", gamma_one);
 
+  double g_one, t_one, gamma_one;
   int law_one = NEOHOOKEAN;
-  if (narg == 6) {
-    if (strcmp(arg[4], "law") != 0)
-      error->all(FLERR, "Bond_coeff cell/neohookean: unknown keyword '{}' (expected 'law')", arg[4]);
-    if (strcmp(arg[5], LAW_NAMES[NEOHOOKEAN]) == 0)
-      law_one = NEOHOOKEAN;
-    else if (strcmp(arg[5], LAW_NAMES[LINEAR]) == 0)
-      law_one = LINEAR;
-    else
-      error->all(FLERR, "Bond_coeff cell/neohookean: unknown law '{}' (expected neohookean or linear)", arg[5]);
+  if (narg == 3 && strcmp(arg[1], "file") == 0) {
+    CellParams params(lmp, arg[2], "bond_coeff cell/neohookean");
+    g_one = params.positive("wall_G");
+    t_one = params.positive("wall_t0");
+    gamma_one = params.nonnegative("wall_gamma");
+    if (params.has("wall_law")) law_one = parse_law(params.word("wall_law"));
+  } else {
+    if (narg != 4 && narg != 6)
+      error->all(FLERR,
+                 "Incorrect args for bond_coeff cell/neohookean: expected 'bond_coeff <type> "
+                 "<G> <t0> <gamma> [law neohookean|linear]' or 'bond_coeff <type> file "
+                 "<parameter file>', got {} args",
+                 narg);
+    g_one = utils::numeric(FLERR, arg[1], false, lmp);
+    t_one = utils::numeric(FLERR, arg[2], false, lmp);
+    gamma_one = utils::numeric(FLERR, arg[3], false, lmp);
+    if (g_one <= 0.0)
+      error->all(FLERR, "Bond_coeff cell/neohookean: shear modulus G = {} must be > 0", g_one);
+    if (t_one <= 0.0)
+      error->all(FLERR, "Bond_coeff cell/neohookean: wall thickness t0 = {} must be > 0", t_one);
+    if (gamma_one < 0.0)
+      error->all(FLERR, "Bond_coeff cell/neohookean: damping gamma = {} must be >= 0", gamma_one);
+    if (narg == 6) {
+      if (strcmp(arg[4], "law") != 0)
+        error->all(FLERR, "Bond_coeff cell/neohookean: unknown keyword '{}' (expected 'law')",
+                   arg[4]);
+      law_one = parse_law(arg[5]);
+    }
   }
 
   for (int i = ilo; i <= ihi; i++) {
@@ -191,6 +206,17 @@ void BondCellNeoHookean::coeff(int narg, char **arg)
   }
 }
 
+/* ---------------------------------------------------------------------- */
+
+int BondCellNeoHookean::parse_law(const std::string &name)
+{
+  for (int l : {NEOHOOKEAN, LINEAR})
+    if (name == LAW_NAMES[l]) return l;
+  error->all(FLERR, "Bond_coeff cell/neohookean: unknown law '{}' (expected neohookean or linear)",
+             name);
+  return NEOHOOKEAN;
+}
+
 /* ----------------------------------------------------------------------
    check the per-atom fields, precompute G t0 / sqrt3 and the longest rest length per type
 ------------------------------------------------------------------------- */
@@ -200,8 +226,9 @@ void BondCellNeoHookean::init_style()
   int flag, cols;
   ixref = atom->find_custom("xref", flag, cols);
   if (ixref < 0 || flag != 1 || cols != 3)
-    error->all(FLERR, "Bond style cell/neohookean needs per-atom reference positions: add "
-                      "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
+    error->all(FLERR,
+               "Bond style cell/neohookean needs per-atom reference positions: add "
+               "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
 
   bool damped = false;
   for (int i = 1; i <= atom->nbondtypes; i++) {
@@ -209,8 +236,9 @@ void BondCellNeoHookean::init_style()
     damped = damped || gamma[i] > 0.0;
   }
   if (damped && !comm->ghost_velocity)
-    error->all(FLERR, "Bond style cell/neohookean with damping gamma > 0 needs ghost velocities: "
-                      "use 'comm_modify vel yes'");
+    error->all(FLERR,
+               "Bond style cell/neohookean with damping gamma > 0 needs ghost velocities: "
+               "use 'comm_modify vel yes'");
 
   std::vector<double> lmax(atom->nbondtypes + 1, 0.0);
   for (int i = 0; i < atom->nlocal; i++)
@@ -264,7 +292,8 @@ void BondCellNeoHookean::read_restart(FILE *fp)
 void BondCellNeoHookean::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nbondtypes; i++)
-    fprintf(fp, "%d %.16g %.16g %.16g law %s\n", i, shear[i], thickness[i], gamma[i], LAW_NAMES[law[i]]);
+    fprintf(fp, "%d %.16g %.16g %.16g law %s\n", i, shear[i], thickness[i], gamma[i],
+            LAW_NAMES[law[i]]);
 }
 
 /* ----------------------------------------------------------------------

@@ -8,6 +8,8 @@
 
 #include "bond.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 class BondCellNeoHookean : public Bond {
@@ -29,11 +31,12 @@ class BondCellNeoHookean : public Bond {
  protected:
   double *shear, *thickness, *gamma;    // G, t0, damping coefficient per bond type
   int *law;
-  double *kappa;                        // G t0 / sqrt(3), precomputed per type
-  double *l0max;                        // longest rest length per type, for cutoff estimates
-  int ixref;                            // index of the per-atom reference positions (d2_xref 3)
+  double *kappa;    // G t0 / sqrt(3), precomputed per type
+  double *l0max;    // longest rest length per type, for cutoff estimates
+  int ixref;        // index of the per-atom reference positions (d2_xref 3)
 
   void allocate();
+  int parse_law(const std::string &);
   double rest_length(int, int) const;
   double stretch_force(int, double, double, double &) const;
 };

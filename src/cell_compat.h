@@ -32,12 +32,19 @@ namespace CellCompat {
   enum { REQ_DEFAULT = 0, REQ_FULL = 1 << 0, REQ_OCCASIONAL = 1 << 4 };
 
 #if CELL_NEW_NEIGH_COMM
-  template <class Style> NeighRequest *request_list(Neighbor *neighbor, Style *style, int, int flags)
+  template <class Style>
+  NeighRequest *request_list(Neighbor *neighbor, Style *style, int, int flags)
   {
     return neighbor->add_request(style, flags);
   }
-  template <class Style> void forward_comm(Comm *comm, Style *style) { comm->forward_comm(style); }
-  template <class Style> void reverse_comm(Comm *comm, Style *style) { comm->reverse_comm(style); }
+  template <class Style> void forward_comm(Comm *comm, Style *style)
+  {
+    comm->forward_comm(style);
+  }
+  template <class Style> void reverse_comm(Comm *comm, Style *style)
+  {
+    comm->reverse_comm(style);
+  }
 #else
   inline NeighRequest *configure(NeighRequest *rq, int flags)
   {
@@ -59,10 +66,22 @@ namespace CellCompat {
     rq->fix = 1;
     return configure(rq, flags);
   }
-  inline void forward_comm(Comm *comm, Pair *style) { comm->forward_comm_pair(style); }
-  inline void reverse_comm(Comm *comm, Pair *style) { comm->reverse_comm_pair(style); }
-  inline void forward_comm(Comm *comm, Fix *style) { comm->forward_comm_fix(style); }
-  inline void reverse_comm(Comm *comm, Fix *style) { comm->reverse_comm_fix(style); }
+  inline void forward_comm(Comm *comm, Pair *style)
+  {
+    comm->forward_comm_pair(style);
+  }
+  inline void reverse_comm(Comm *comm, Pair *style)
+  {
+    comm->reverse_comm_pair(style);
+  }
+  inline void forward_comm(Comm *comm, Fix *style)
+  {
+    comm->forward_comm_fix(style);
+  }
+  inline void reverse_comm(Comm *comm, Fix *style)
+  {
+    comm->reverse_comm_fix(style);
+  }
 #endif
 
   // yes/no/on/off/true/false as utils::logical() in current LAMMPS; -1 if none of these
