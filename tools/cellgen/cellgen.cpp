@@ -1,0 +1,329 @@
+// cellgen: writes the initial geometry of cellsph plant cells (fluid-filled spheres bounded by a
+// triangulated wall) as a LAMMPS data file for atom_style angle. See README.md.
+#include "geometry.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace cellgen;
+
+constexpr const char *kVersion = "cellgen 1.0";
+constexpr double kPi = 3.14159265358979323846;
+
+constexpr const char *kUsage =
+    "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--nfluid M=1624] [--dx DX] [--gap G]\n"
+    "               [--rho0 1000] [--wall-mass MW] [--cells NX NY NZ] [--spacing S]\n"
+    "               [--radius-spread F] [--seed 1] --out FILE.data\n"
+    "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Options {
+  double radius = 75e-6;
+  long nwall = 1091;
+  long nfluid = 1624;
+  std::optional<double> dx, gap, wallMass, spacing;
+  double rho0 = 1000.0;
+  std::array<long, 3> cells{1, 1, 1};
+  double spread = 0.0;
+  std::uint64_t seed = 1;
+  std::string out;
+};
+
+// Hands out the command-line words one at a time, converting option values.
+class ArgReader {
+ public:
+  ArgReader(int argc, char **argv) : args_(argv + 1, argv + argc) {}
+
+  bool done() const { return pos_ >= args_.size(); }
+  std::string option() { return option_ = args_[pos_++]; }
+  std::string word()
+  {
+    if (done()) throw UsageError(option_ + " needs more values");
+    return args_[pos_++];
+  }
+  double real()
+  {
+    const double v =
+        convert<double>([](const std::string &s, size_t *n) { return std::stod(s, n); });
+    if (!std::isfinite(v)) throw UsageError(option_ + ": value must be finite");
+    return v;
+  }
+  long integer()
+  {
+    return convert<long>([](const std::string &s, size_t *n) { return std::stol(s, n); });
+  }
+
+ private:
+  template <class T, class F> T convert(F &&parse)
+  {
+    const std::string s = word();
+    size_t used = 0;
+    T value{};
+    try {
+      value = parse(s, &used);
+    } catch (const std::logic_error &) {
+      used = 0;
+    }
+    if (used == 0 || used != s.size()) throw UsageError(option_ + ": not a number: '" + s + "'");
+    return value;
+  }
+
+  std::vector<std::string> args_;
+  size_t pos_ = 0;
+  std::string option_;
+};
+
+using Handler = std::function<void(ArgReader &, Options &)>;
+
+const std::map<std::string, Handler> &optionHandlers()
+{
+  static const std::map<std::string, Handler> handlers = {
+      {"--radius", [](ArgReader &a, Options &o) { o.radius = a.real(); }},
+      {"--nwall", [](ArgReader &a, Options &o) { o.nwall = a.integer(); }},
+      {"--nfluid", [](ArgReader &a, Options &o) { o.nfluid = a.integer(); }},
+      {"--dx", [](ArgReader &a, Options &o) { o.dx = a.real(); }},
+      {"--gap", [](ArgReader &a, Options &o) { o.gap = a.real(); }},
+      {"--rho0", [](ArgReader &a, Options &o) { o.rho0 = a.real(); }},
+      {"--wall-mass", [](ArgReader &a, Options &o) { o.wallMass = a.real(); }},
+      {"--spacing", [](ArgReader &a, Options &o) { o.spacing = a.real(); }},
+      {"--radius-spread", [](ArgReader &a, Options &o) { o.spread = a.real(); }},
+      {"--seed",
+       [](ArgReader &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
+      {"--out", [](ArgReader &a, Options &o) { o.out = a.word(); }},
+      {"--cells",
+       [](ArgReader &a, Options &o) {
+         for (long &c : o.cells) c = a.integer();
+       }},
+      {"--2d",
+       [](ArgReader &, Options &) { throw UsageError("2-D geometries are not supported"); }},
+  };
+  return handlers;
+}
+
+void require(bool ok, const std::string &message)
+{
+  if (!ok) throw UsageError(message);
+}
+
+void validate(const Options &o)
+{
+  require(o.radius > 0, "--radius must be positive");
+  require(o.nwall >= 4 && o.nwall <= 10000000, "--nwall must be in [4, 1e7]");
+  require(o.nfluid >= 1 && o.nfluid <= 100000000, "--nfluid must be in [1, 1e8]");
+  require(!o.dx || *o.dx > 0, "--dx must be positive");
+  require(!o.gap || (*o.gap >= 0 && *o.gap < o.radius * (1 - o.spread)),
+          "--gap must be in [0, smallest radius)");
+  require(o.rho0 > 0, "--rho0 must be positive");
+  require(!o.wallMass || *o.wallMass > 0, "--wall-mass must be positive");
+  require(!o.spacing || *o.spacing > 0, "--spacing must be positive");
+  require(o.spread >= 0 && o.spread < 1, "--radius-spread must be in [0, 1)");
+  require(std::all_of(o.cells.begin(), o.cells.end(), [](long c) { return c >= 1 && c <= 1000; }),
+          "--cells needs three counts in [1, 1000]");
+  require(!o.out.empty(), "--out FILE is required");
+}
+
+Options parseOptions(int argc, char **argv)
+{
+  Options o;
+  ArgReader args(argc, argv);
+  while (!args.done()) {
+    const std::string opt = args.option();
+    const auto h = optionHandlers().find(opt);
+    if (h == optionHandlers().end()) throw UsageError("unknown option '" + opt + "'");
+    h->second(args, o);
+  }
+  validate(o);
+  return o;
+}
+
+std::string commandLine(int argc, char **argv)
+{
+  std::string s;
+  for (int i = 1; i < argc; ++i) s += std::string(i > 1 ? " " : "") + argv[i];
+  return s;
+}
+
+// ---- data file ---------------------------------------------------------------------------
+
+using File = std::unique_ptr<std::FILE, int (*)(std::FILE *)>;
+
+// Per-type mass of the Masses section: that of cell 1 (CellAtoms holds every atom's own mass).
+double typeMass(const System &sys, ParticleType type)
+{
+  return std::find_if(sys.particles.begin(), sys.particles.end(),
+                      [type](const Particle &p) { return p.type == type; })
+      ->mass;
+}
+
+void writeHeader(std::FILE *f, const System &sys, const std::string &comment)
+{
+  std::fprintf(f, "%s\n\n", comment.c_str());
+  std::fprintf(f, "%zu atoms\n%zu bonds\n%zu angles\n", sys.particles.size(), sys.bonds.size(),
+               sys.triangles.size());
+  std::fprintf(f, "2 atom types\n1 bond types\n1 angle types\n\n");
+  const char *names[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d)
+    std::fprintf(f, "%.15g %.15g %slo %shi\n", sys.lo[d], sys.hi[d], names[d], names[d]);
+  std::fprintf(f, "\nMasses\n\n1 %.15g\n2 %.15g\n", typeMass(sys, kFluid), typeMass(sys, kWall));
+}
+
+void writeSections(std::FILE *f, const System &sys)
+{
+  std::fprintf(f, "\nAtoms # angle\n\n");
+  for (size_t i = 0; i < sys.particles.size(); ++i) {
+    const Particle &p = sys.particles[i];
+    std::fprintf(f, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
+                 p.x[0], p.x[1], p.x[2]);
+  }
+  std::fprintf(f, "\nBonds\n\n");
+  for (size_t i = 0; i < sys.bonds.size(); ++i)
+    std::fprintf(f, "%zu 1 %d %d\n", i + 1, sys.bonds[i][0] + 1, sys.bonds[i][1] + 1);
+  std::fprintf(f, "\nAngles\n\n");
+  for (size_t i = 0; i < sys.triangles.size(); ++i) {
+    const Tri &t = sys.triangles[i];
+    std::fprintf(f, "%zu 1 %d %d %d\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
+  }
+  std::fprintf(f, "\nCellAtoms\n\n");
+  for (size_t i = 0; i < sys.particles.size(); ++i) {
+    const Particle &p = sys.particles[i];
+    std::fprintf(f, "%zu %.15g %.15g %.15g %.15g\n", i + 1, p.mass, p.x[0], p.x[1], p.x[2]);
+  }
+}
+
+void writeData(const std::string &path, const System &sys, const std::string &comment)
+{
+  File f(std::fopen(path.c_str(), "w"), &std::fclose);
+  if (!f) throw std::runtime_error("cannot open " + path + " for writing");
+  writeHeader(f.get(), sys, comment);
+  writeSections(f.get(), sys);
+  if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
+    throw std::runtime_error("error writing " + path);
+}
+
+// ---- run and summary ---------------------------------------------------------------------
+
+struct Totals {
+  size_t cells = 0;
+  long fluid = 0, wall = 0;
+  long minFluid = 0, maxFluid = 0;
+  double sphereVolume = 0, sphereArea = 0, volume = 0, area = 0;
+  double minEdge = INFINITY, meanEdge = 0, maxEdge = 0;
+};
+
+Totals totals(const System &sys, const std::vector<CellSpec> &cells, const SurfaceStats &unit)
+{
+  Totals t;
+  t.cells = cells.size();
+  std::vector<long> fluidPerCell(cells.size(), 0);
+  for (const Particle &p : sys.particles)
+    if (p.type == kFluid)
+      ++fluidPerCell[p.molecule - 1];
+    else
+      ++t.wall;
+  t.minFluid = *std::min_element(fluidPerCell.begin(), fluidPerCell.end());
+  t.maxFluid = *std::max_element(fluidPerCell.begin(), fluidPerCell.end());
+  t.fluid = static_cast<long>(sys.particles.size()) - t.wall;
+  for (const CellSpec &c : cells) {
+    const double r = c.radius;
+    t.sphereVolume += 4.0 / 3.0 * kPi * r * r * r;
+    t.sphereArea += 4.0 * kPi * r * r;
+    t.volume += unit.volume * r * r * r;
+    t.area += unit.area * r * r;
+    t.minEdge = std::min(t.minEdge, unit.minEdge * r);
+    t.maxEdge = std::max(t.maxEdge, unit.maxEdge * r);
+    t.meanEdge += unit.meanEdge * r / cells.size();
+  }
+  return t;
+}
+
+void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, const Totals &t,
+                  double seconds)
+{
+  const std::string chosen = o.dx ? "" : " (chosen for " + std::to_string(o.nfluid) + " fluid)";
+  std::printf("%s: %zu cell(s), R = %g m (spread %g), DX = %g m%s, gap = %g m\n", kVersion, t.cells,
+              o.radius, o.spread, sp.dx, chosen.c_str(), sp.gap);
+  std::printf("particles: %ld fluid (%ld to %ld per cell), %ld wall (%ld per cell); %zu bonds, "
+              "%zu triangles\n",
+              t.fluid, t.minFluid, t.maxFluid, t.wall, o.nwall, sys.bonds.size(),
+              sys.triangles.size());
+  std::printf("wall bond length: min %g, mean %g, max %g m (max/min %.3f)\n", t.minEdge, t.meanEdge,
+              t.maxEdge, t.maxEdge / t.minEdge);
+  std::printf("enclosed volume %g m^3 = %.5f x spheres; area %g m^2 = %.5f x spheres\n", t.volume,
+              t.volume / t.sphereVolume, t.area, t.area / t.sphereArea);
+  std::printf("box [%g, %g] x [%g, %g] x [%g, %g] m; wrote %s in %.2f s\n", sys.lo[0], sys.hi[0],
+              sys.lo[1], sys.hi[1], sys.lo[2], sys.hi[2], o.out.c_str(), seconds);
+}
+
+FluidSpacing fluidSpacing(const Options &o)
+{
+  if (o.dx) return {*o.dx, o.gap.value_or(0.5 * *o.dx)};
+  return chooseSpacing(o.radius, o.nfluid, o.gap);
+}
+
+std::string comment(const Options &o, const std::string &args, const FluidSpacing &sp,
+                    const Totals &t)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof buf, " | R=%.15g DX=%.15g gap=%.15g cells=%zu fluid=%ld wall=%ld",
+                o.radius, sp.dx, sp.gap, t.cells, t.fluid, t.wall);
+  return std::string(kVersion) + " | args: " + args + buf;
+}
+
+void run(const Options &o, const std::string &args)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const FluidSpacing sp = fluidSpacing(o);
+  // default spacing leaves a 5% gap between the largest possible cells
+  const double spacing = o.spacing.value_or(2.0 * o.radius * (1.0 + o.spread) * 1.05);
+  const std::array<int, 3> counts{static_cast<int>(o.cells[0]), static_cast<int>(o.cells[1]),
+                                  static_cast<int>(o.cells[2])};
+  const std::vector<CellSpec> cells = cellLattice(counts, spacing, o.radius, o.spread, o.seed);
+  checkNoOverlap(cells);
+  const Surface unit = unitSphereSurface(static_cast<int>(o.nwall));
+  BuildParams params;
+  params.spacing = sp;
+  params.rho0 = o.rho0;
+  params.wallMass = o.wallMass;
+  params.boxMargin = 0.5 * o.radius;
+  const System sys = buildSystem(unit, cells, params);
+  const Totals t = totals(sys, cells, surfaceStats(unit));
+  writeData(o.out, sys, comment(o, args, sp, t));
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  printSummary(o, sp, sys, t, elapsed.count());
+}
+
+}    // namespace
+
+int main(int argc, char **argv)
+{
+  const std::vector<std::string> words(argv + 1, argv + argc);
+  if (std::find(words.begin(), words.end(), "--help") != words.end() ||
+      std::find(words.begin(), words.end(), "-h") != words.end()) {
+    std::cout << kUsage;
+    return 0;
+  }
+  try {
+    run(parseOptions(argc, argv), commandLine(argc, argv));
+  } catch (const UsageError &e) {
+    std::cerr << "cellgen: " << e.what() << "\n" << kUsage;
+    return 2;
+  } catch (const std::exception &e) {
+    std::cerr << "cellgen: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

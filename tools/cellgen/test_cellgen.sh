@@ -1,0 +1,140 @@
+#!/usr/bin/env bash
+# Runs a cellgen binary and checks invariants of the data files it writes.
+#   usage: tools/cellgen/test_cellgen.sh path/to/cellgen
+# Exits non-zero if any check fails.
+set -euo pipefail
+bin=${1:?usage: test_cellgen.sh path/to/cellgen}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+
+# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL
+# FLUID_TOL / VOLUME_TOL are relative; 0 skips the fluid-count / volume-accuracy test.
+check_data() {
+  awk -v wall_expect="$2" -v fluid_target="$3" -v fluid_tol="$4" -v vol_tol="$5" '
+    function fail(msg) { print "  FAIL: " msg; bad++ }
+    function ekey(i, j) { return (i < j) ? i " " j : j " " i }
+    function abs(v) { return v < 0 ? -v : v }
+    NR == 1 { if (match($0, /gap=[^ ]+/)) gap = substr($0, RSTART + 4, RLENGTH - 4) + 0; next }
+    /^[ \t]*$/ { next }
+    section == "" && $2 == "atoms" { h_atoms = $1; next }
+    section == "" && $2 == "bonds" { h_bonds = $1; next }
+    section == "" && $2 == "angles" { h_angles = $1; next }
+    $1 == "Masses" || $1 == "Atoms" || $1 == "Bonds" || $1 == "Angles" || $1 == "CellAtoms" {
+      section = $1; next
+    }
+    section == "Masses" { tmass[$1] = $2 }
+    section == "Atoms" {
+      n_atoms++; mol[$1] = $2; type[$1] = $3; x[$1] = $4; y[$1] = $5; z[$1] = $6; xs[$1] = $4 " " $5 " " $6
+      if ($2 > nmol) nmol = $2
+      if ($3 == 2) nv[$2]++
+      else { nfl[$2]++; cx[$2] += $4; cy[$2] += $5; cz[$2] += $6 }
+    }
+    section == "Bonds" {
+      n_bonds++; ne[mol[$3]]++
+      if (bond[ekey($3, $4)]++) fail("duplicate bond " $3 "-" $4)
+    }
+    section == "Angles" {
+      n_angles++; nf[mol[$3]]++; ta[n_angles] = $3; tb[n_angles] = $4; tc[n_angles] = $5
+      tri_edge[ekey($3, $4)]++; tri_edge[ekey($4, $5)]++; tri_edge[ekey($5, $3)]++
+      if (dir[$3 " " $4]++ || dir[$4 " " $5]++ || dir[$5 " " $3]++) fail("edge twice in one direction")
+    }
+    section == "CellAtoms" {
+      n_cell++
+      if ($3 " " $4 " " $5 != xs[$1]) fail("CellAtoms xref differs from position of atom " $1)
+      if ($2 <= 0) fail("non-positive mass of atom " $1)
+      if (nmol_single && abs($2 / tmass[type[$1]] - 1) > 1e-9) fail("per-atom mass != type mass")
+    }
+    END {
+      pi = atan2(0, -1)
+      if (n_atoms != h_atoms || n_cell != h_atoms) fail("atom counts " n_atoms "/" n_cell " vs header " h_atoms)
+      if (n_bonds != h_bonds) fail("bond count " n_bonds " vs header " h_bonds)
+      if (n_angles != h_angles) fail("angle count " n_angles " vs header " h_angles)
+      for (k in tri_edge) if (tri_edge[k] != 2) { fail("edge " k " in " tri_edge[k] " triangles"); break }
+      for (k in tri_edge) if (!(k in bond)) { fail("triangle edge " k " is not a bond"); break }
+      for (k in bond) if (!(k in tri_edge)) { fail("bond " k " is not a triangle edge"); break }
+      for (m = 1; m <= nmol; m++) {
+        if (nv[m] - ne[m] + nf[m] != 2) fail("cell " m ": V-E+F = " nv[m] - ne[m] + nf[m])
+        if (nv[m] != wall_expect) fail("cell " m ": " nv[m] " wall particles, expected " wall_expect)
+        if (fluid_tol > 0 && abs(nfl[m] / fluid_target - 1) > fluid_tol) fail("cell " m ": " nfl[m] " fluid")
+        cx[m] /= nfl[m]; cy[m] /= nfl[m]; cz[m] /= nfl[m]
+      }
+      for (i in type) {
+        m = mol[i]; dx = x[i] - cx[m]; dy = y[i] - cy[m]; dz = z[i] - cz[m]
+        if (type[i] == 2) rad[m] += sqrt(dx * dx + dy * dy + dz * dz) / nv[m]
+      }
+      for (i in type) {
+        m = mol[i]; dx = x[i] - cx[m]; dy = y[i] - cy[m]; dz = z[i] - cz[m]
+        if (type[i] == 1 && sqrt(dx * dx + dy * dy + dz * dz) > rad[m] - gap + 1e-9 * rad[m])
+          { fail("fluid atom " i " outside R - gap"); break }
+      }
+      for (t = 1; t <= n_angles; t++) {
+        a = ta[t]; b = tb[t]; c = tc[t]; m = mol[a]
+        ax = x[a] - cx[m]; ay = y[a] - cy[m]; az = z[a] - cz[m]
+        bx = x[b] - cx[m]; by = y[b] - cy[m]; bz = z[b] - cz[m]
+        qx = x[c] - cx[m]; qy = y[c] - cy[m]; qz = z[c] - cz[m]
+        # signed tetrahedron volume a . (b x c) / 6 (divergence theorem)
+        v6 = ax * (by * qz - bz * qy) + ay * (bz * qx - bx * qz) + az * (bx * qy - by * qx)
+        vol[m] += v6 / 6
+        if (v6 <= 0) inward++
+      }
+      if (inward) fail(inward " triangle(s) not outward")
+      for (m = 1; m <= nmol; m++) {
+        exact = 4 / 3 * pi * rad[m] ^ 3
+        if (vol[m] <= 0) fail("cell " m ": enclosed volume " vol[m] " <= 0")
+        if (vol_tol > 0 && abs(vol[m] / exact - 1) > vol_tol) fail("cell " m ": volume ratio " vol[m] / exact)
+      }
+      printf "  %d cell(s), %d atoms, %d bonds, %d triangles, gap %g\n", nmol, n_atoms, n_bonds, n_angles, gap
+      exit bad > 0
+    }' nmol_single="$6" "$1"
+}
+
+# run NAME WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL -- cellgen args...
+run() {
+  local name=$1 wall=$2 fluid=$3 ftol=$4 vtol=$5 single=$6
+  shift 7
+  echo "[$name] cellgen $*"
+  if "$bin" "$@" --out "$tmp/$name.data" >"$tmp/$name.log" 2>&1 &&
+    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single"; then
+    echo "  ok"
+  else
+    cat "$tmp/$name.log"
+    failed=1
+  fi
+}
+
+# expect_error NAME -- cellgen args...: cellgen must refuse these arguments
+expect_error() {
+  local name=$1
+  shift 2
+  echo "[$name] cellgen $* (must fail)"
+  if "$bin" "$@" --out "$tmp/$name.data" >"$tmp/$name.log" 2>&1; then
+    echo "  FAIL: exit status 0"
+    failed=1
+  else
+    echo "  ok: $(head -n 1 "$tmp/$name.log")"
+  fi
+}
+
+run default 1091 1624 0.05 0.03 1 --
+run fine 4000 5000 0.05 0.03 1 -- --nwall 4000 --nfluid 5000 --rho0 1100
+run tiny 12 10 0 0 1 -- --nwall 12 --nfluid 10 --radius 1e-5
+run lattice 300 0 0 0.03 0 -- --cells 3 2 2 --radius-spread 0.2 --seed 7 --nwall 300 --dx 12e-6
+run gap 500 0 0 0.03 1 -- --nwall 500 --dx 8e-6 --gap 10e-6 --wall-mass 1e-12
+
+echo "[determinism] same seed, same file (apart from the comment line naming it)"
+"$bin" --cells 2 2 1 --radius-spread 0.1 --seed 3 --nwall 200 --out "$tmp/a.data" >/dev/null
+"$bin" --cells 2 2 1 --radius-spread 0.1 --seed 3 --nwall 200 --out "$tmp/b.data" >/dev/null
+if cmp -s <(tail -n +2 "$tmp/a.data") <(tail -n +2 "$tmp/b.data"); then echo "  ok"; else echo "  FAIL: outputs differ"; failed=1; fi
+
+expect_error overlap -- --cells 2 1 1 --spacing 100e-6
+expect_error badnumber -- --radius 75um
+expect_error unknown -- --bogus 1
+expect_error twod -- --2d
+expect_error gap-too-large -- --gap 80e-6
+
+if [ "$failed" -ne 0 ]; then
+  echo "test_cellgen: FAILED"
+  exit 1
+fi
+echo "test_cellgen: all checks passed"
