@@ -24,12 +24,13 @@
 using namespace LAMMPS_NS;
 
 static const char *const LAW_NAMES[] = {"neohookean", "linear"};
+static constexpr double SQRT3_6 = 0.28867513459481287;    // sqrt(3) / 6
 
 /* ---------------------------------------------------------------------- */
 
 BondCellNeoHookean::BondCellNeoHookean(LAMMPS *lmp) :
-    Bond(lmp), shear(nullptr), thickness(nullptr), gamma(nullptr), law(nullptr), kappa(nullptr),
-    l0max(nullptr), ixref(-1)
+    Bond(lmp), shear(nullptr), thickness(nullptr), gamma(nullptr), law(nullptr), gt0(nullptr),
+    l0max(nullptr), ixref(-1), iaref(-1)
 {
   writedata = 1;
 }
@@ -44,7 +45,7 @@ BondCellNeoHookean::~BondCellNeoHookean()
     memory->destroy(thickness);
     memory->destroy(gamma);
     memory->destroy(law);
-    memory->destroy(kappa);
+    memory->destroy(gt0);
     memory->destroy(l0max);
   }
 }
@@ -77,7 +78,8 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
       error->one(FLERR, "Bond cell/neohookean: atoms {} and {} coincide", atom->tag[i1],
                  atom->tag[i2]);
 
-    double fbond = -stretch_force(type, r, rest_length(i1, i2), ebond) / r;
+    const double l0 = rest_length(i1, i2);
+    double fbond = -stretch_force(type, r, l0, bond_area(i1, i2, l0), ebond) / r;
 
     // F^d = -gamma ((v1 - v2) . e) e: damps stretching, not rigid motion (design.md section 1)
     if (gamma[type] > 0.0) {
@@ -101,25 +103,43 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   tension (dU/dl) of a bond of type at length r with rest length l0; energy U into u
+   tension dU/dl of a bond of type at length r, rest length l0, reference area a; energy U into u.
+   A bond carries the membrane energy of its area a: U = (G t0 a / 2)(2 lam^2 + lam^-4 - 3), the
+   incompressible Neo-Hookean membrane energy per area under equibiaxial stretch (model-notes.md
+   5.1), so a closed wall under uniform stretch has exactly the tension G t0 (1 - lam^-6).
 ------------------------------------------------------------------------- */
 
-double BondCellNeoHookean::stretch_force(int type, double r, double l0, double &u) const
+double BondCellNeoHookean::stretch_force(int type, double r, double l0, double a, double &u) const
 {
-  const double k = kappa[type];
+  const double c = gt0[type] * a;
   if (law[type] == LINEAR) {
-    // F = 2 sqrt(3) G t0 (l - l0): the small-strain tangent of the Neo-Hookean law
-    const double dl = r - l0;
-    u = 3.0 * k * dl * dl;
-    return 6.0 * k * dl;
+    // F = 12 G t0 a (l - l0) / l0^2: the small-strain tangent of the Neo-Hookean law
+    const double strain = (r - l0) / l0;
+    u = 6.0 * c * strain * strain;
+    return 12.0 * c * strain / l0;
   }
-  // F = (G t0 l0 / sqrt3)(lambda - lambda^-5), U = (sqrt3 G t0 l0^2 / 12)(2 lambda^2 + lambda^-4 - 3)
-  // (model-notes.md 5.1, law 3: exact equibiaxial Neo-Hookean membrane tension)
+  // F = dU/dl = 2 G t0 a (lam - lam^-5) / l0
   const double lam = r / l0;
   const double lam2 = lam * lam;
   const double lam4 = lam2 * lam2;
-  u = 0.25 * k * l0 * l0 * (2.0 * lam2 + 1.0 / lam4 - 3.0);
-  return k * l0 * (lam - 1.0 / (lam4 * lam));
+  u = 0.5 * c * (2.0 * lam2 + 1.0 / lam4 - 3.0);
+  return 2.0 * c * (lam - 1.0 / (lam4 * lam)) / l0;
+}
+
+/* ----------------------------------------------------------------------
+   reference wall area of the bond between local atoms i and j: aref_i + aref_j (tools/cellgen),
+   or without aref that of a bond in an equilateral mesh, sqrt(3) l0^2 / 6
+------------------------------------------------------------------------- */
+
+double BondCellNeoHookean::bond_area(int i, int j, double l0) const
+{
+  if (iaref < 0) return SQRT3_6 * l0 * l0;
+  const double *aref = atom->dvector[iaref];
+  const double a = aref[i] + aref[j];
+  if (a <= 0.0)
+    error->one(FLERR, "Bond cell/neohookean: bond {}-{} has reference area aref_i + aref_j = {}",
+               atom->tag[i], atom->tag[j], a);
+  return a;
 }
 
 /* ----------------------------------------------------------------------
@@ -144,12 +164,12 @@ void BondCellNeoHookean::allocate()
   memory->create(thickness, n, "bond:thickness");
   memory->create(gamma, n, "bond:gamma");
   memory->create(law, n, "bond:law");
-  memory->create(kappa, n, "bond:kappa");
+  memory->create(gt0, n, "bond:gt0");
   memory->create(l0max, n, "bond:l0max");
   memory->create(setflag, n, "bond:setflag");
   for (int i = 0; i < n; i++) {
     setflag[i] = 0;
-    kappa[i] = l0max[i] = 0.0;
+    gt0[i] = l0max[i] = 0.0;
   }
 }
 
@@ -218,7 +238,7 @@ int BondCellNeoHookean::parse_law(const std::string &name)
 }
 
 /* ----------------------------------------------------------------------
-   check the per-atom fields, precompute G t0 / sqrt3 and the longest rest length per type
+   check the per-atom fields, precompute G t0 and the longest rest length per type
 ------------------------------------------------------------------------- */
 
 void BondCellNeoHookean::init_style()
@@ -230,9 +250,13 @@ void BondCellNeoHookean::init_style()
                "Bond style cell/neohookean needs per-atom reference positions: add "
                "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
 
+  iaref = atom->find_custom("aref", flag, cols);
+  if (iaref >= 0 && (flag != 1 || cols != 0))
+    error->all(FLERR, "Bond style cell/neohookean: per-atom 'aref' must be a d_aref vector");
+
   bool damped = false;
   for (int i = 1; i <= atom->nbondtypes; i++) {
-    kappa[i] = shear[i] * thickness[i] / sqrt(3.0);
+    gt0[i] = shear[i] * thickness[i];
     damped = damped || gamma[i] > 0.0;
   }
   if (damped && !comm->ghost_velocity)
@@ -304,7 +328,8 @@ double BondCellNeoHookean::single(int type, double rsq, int i, int j, double &ff
 {
   const double r = sqrt(rsq);
   double u;
-  fforce = -stretch_force(type, r, rest_length(i, j), u) / r;
+  const double l0 = rest_length(i, j);
+  fforce = -stretch_force(type, r, l0, bond_area(i, j, l0), u) / r;
   return u;
 }
 

@@ -31,14 +31,16 @@ class BondCellNeoHookean : public Bond {
  protected:
   double *shear, *thickness, *gamma;    // G, t0, damping coefficient per bond type
   int *law;
-  double *kappa;    // G t0 / sqrt(3), precomputed per type
+  double *gt0;      // G t0, precomputed per type
   double *l0max;    // longest rest length per type, for cutoff estimates
   int ixref;        // index of the per-atom reference positions (d2_xref 3)
+  int iaref;        // index of the per-atom reference area per bond (d_aref), -1 if absent
 
   void allocate();
   int parse_law(const std::string &);
   double rest_length(int, int) const;
-  double stretch_force(int, double, double, double &) const;
+  double bond_area(int, int, double) const;
+  double stretch_force(int, double, double, double, double &) const;
 };
 
 }    // namespace LAMMPS_NS

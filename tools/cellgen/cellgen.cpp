@@ -123,7 +123,7 @@ void validate(const Options &o)
 {
   require(o.radius > 0, "--radius must be positive");
   require(o.nwall >= 4 && o.nwall <= 10000000, "--nwall must be in [4, 1e7]");
-  require(o.nfluid >= 1 && o.nfluid <= 100000000, "--nfluid must be in [1, 1e8]");
+  require(o.nfluid >= 0 && o.nfluid <= 100000000, "--nfluid must be in [0, 1e8]");
   require(!o.dx || *o.dx > 0, "--dx must be positive");
   require(!o.gap || (*o.gap >= 0 && *o.gap < o.radius * (1 - o.spread)),
           "--gap must be in [0, smallest radius)");
@@ -197,10 +197,12 @@ void writeSections(std::FILE *f, const System &sys)
     const Tri &t = sys.triangles[i];
     std::fprintf(f, "%zu 1 %d %d %d\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
   }
-  std::fprintf(f, "\nCellAtoms\n\n");
+  const std::vector<double> aref = bondAreaShares(sys);
+  std::fprintf(f, "\nCellAtoms # rmass xref(3) aref\n\n");
   for (size_t i = 0; i < sys.particles.size(); ++i) {
     const Particle &p = sys.particles[i];
-    std::fprintf(f, "%zu %.15g %.15g %.15g %.15g\n", i + 1, p.mass, p.x[0], p.x[1], p.x[2]);
+    std::fprintf(f, "%zu %.15g %.15g %.15g %.15g %.15g\n", i + 1, p.mass, p.x[0], p.x[1], p.x[2],
+                 aref[i]);
   }
 }
 
@@ -271,6 +273,7 @@ void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, c
 FluidSpacing fluidSpacing(const Options &o)
 {
   if (o.dx) return {*o.dx, o.gap.value_or(0.5 * *o.dx)};
+  if (o.nfluid == 0) return {o.radius, 0.0};    // wall only: the spacing is not used
   return chooseSpacing(o.radius, o.nfluid, o.gap);
 }
 
@@ -297,6 +300,7 @@ void run(const Options &o, const std::string &args)
   BuildParams params;
   params.spacing = sp;
   params.rho0 = o.rho0;
+  params.withFluid = o.nfluid > 0;
   params.wallMass = o.wallMass;
   params.boxMargin = 0.5 * o.radius;
   const System sys = buildSystem(unit, cells, params);

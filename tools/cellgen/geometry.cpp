@@ -316,11 +316,14 @@ namespace {
                   const BuildParams &params)
   {
     const double r = cell.radius;
-    const std::vector<Vec3> fluid = fluidLattice(r - params.spacing.gap, params.spacing.dx);
-    if (fluid.empty())
+    const std::vector<Vec3> fluid = params.withFluid
+        ? fluidLattice(r - params.spacing.gap, params.spacing.dx)
+        : std::vector<Vec3>();
+    if (fluid.empty() && params.withFluid)
       throw std::runtime_error("cell " + std::to_string(molecule) + " has no fluid particle");
     // fluid fills the volume 4/3 pi R^3 enclosed by the wall at the reference density
-    const double fluidMass = params.rho0 * 4.0 / 3.0 * kPi * r * r * r / fluid.size();
+    const double fluidMass =
+        params.rho0 * 4.0 / 3.0 * kPi * r * r * r / std::max<size_t>(fluid.size(), 1);
     // wall shell of area 4 pi R^2 and the given thickness at the reference density
     const double wallMass = params.wallMass.value_or(params.rho0 * 4.0 * kPi * r * r *
                                                      params.wallThickness / unit.points.size());
@@ -486,6 +489,24 @@ System buildSystem(const Surface &unit, const std::vector<CellSpec> &cells,
   sys.lo -= Vec3::Constant(params.boxMargin);
   sys.hi += Vec3::Constant(params.boxMargin);
   return sys;
+}
+
+std::vector<double> bondAreaShares(const System &sys)
+{
+  std::vector<double> area(sys.particles.size(), 0.0), share(sys.particles.size(), 0.0);
+  std::vector<int> degree(sys.particles.size(), 0);
+  for (const Tri &t : sys.triangles) {
+    const Vec3 &a = sys.particles[t[0]].x, &b = sys.particles[t[1]].x, &c = sys.particles[t[2]].x;
+    const double third = (b - a).cross(c - a).norm() / 6.0;    // one third of the triangle area
+    for (int v : t) area[v] += third;
+  }
+  for (const Edge &e : sys.bonds) {
+    ++degree[e[0]];
+    ++degree[e[1]];
+  }
+  for (size_t i = 0; i < share.size(); ++i)
+    if (degree[i] > 0) share[i] = area[i] / degree[i];
+  return share;
 }
 
 }    // namespace cellgen

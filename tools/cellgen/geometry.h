@@ -81,6 +81,7 @@ struct Particle {
 struct BuildParams {
   FluidSpacing spacing;
   double rho0 = 1000;
+  bool withFluid = true;    // false: walls only (--nfluid 0)
   std::optional<double> wallMass;
   double wallThickness = 1e-6;
   double boxMargin = 0;
@@ -96,5 +97,10 @@ struct System {
 
 System buildSystem(const Surface &unit, const std::vector<CellSpec> &cells,
                    const BuildParams &params);
+
+// Per particle: its share of wall area per bond, a_i / z_i, with a_i a third of the area of its
+// triangles and z_i its number of bonds (0 for fluid). A bond's reference area a_i/z_i + a_j/z_j
+// sums to the wall area over all bonds; bond_style cell/neohookean weights each bond by it.
+std::vector<double> bondAreaShares(const System &sys);
 
 }    // namespace cellgen
