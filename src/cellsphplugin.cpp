@@ -11,6 +11,10 @@
 #include "version.h"
 
 #include "bond_cell_neohookean.h"
+#include "compute_cell_props.h"
+#include "fix_cell_turgor.h"
+#include "pair_cell_sph.h"
+#include "pair_cell_wall.h"
 
 #include <cstdio>
 #include <string>
@@ -40,6 +44,13 @@ struct StyleEntry {
 const StyleEntry STYLES[] = {
     {"bond", "cell/neohookean", "Neo-Hookean cell-wall bond with damping",
      &create_v1<BondCellNeoHookean>, nullptr},
+    {"fix", "cell/turgor", "water transfer through the cell wall (turgor, osmosis, permeability)",
+     nullptr, &create_v2<FixCellTurgor>},
+    {"compute", "cell/props", "per-cell mass, volume, area, turgor, osmotic pressure and shape",
+     nullptr, &create_v2<ComputeCellProps>},
+    {"pair", "cell/sph", "SPH cell fluid: summation density, pressure and Morris viscosity",
+     &create_v1<PairCellSPH>, nullptr},
+    {"pair", "cell/wall", "wall repulsion, adhesion, contact", &create_v1<PairCellWall>, nullptr},
 };
 
 // why this LAMMPS cannot run this plugin, or an empty string if it can
