@@ -1,0 +1,539 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   pair_style cell/wall: the central short-range forces between a wall particle and a fluid
+   particle (repulsion F^rw = -F^rf, adhesion F^a) and between non-bonded wall particles (contact).
+   Each term is switched on per type pair; a per-pair bitmask keeps off terms out of the loop.
+   Bonded wall pairs are excluded through special_bonds (factor_lj), fluid-fluid pairs belong to
+   pair_style cell/sph (under hybrid/overlay).
+------------------------------------------------------------------------- */
+
+#include "pair_cell_wall.h"
+
+#include "atom.h"
+#include "cell_compat.h"
+#include "cell_params.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "math_special.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using MathSpecial::cube;
+using MathSpecial::powint;
+
+static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact"};
+static const int TERM_VALUES[] = {2, 4, 2};    // required numbers after each keyword
+static constexpr int NTERMS = 3;
+static constexpr int NPARAM = 10;    // f0 r0 p1 p2 D alpha ra rc eps sigma
+static constexpr double DEFAULT_P1 = 12.0;
+static constexpr double DEFAULT_P2 = 4.0;
+
+static const char *const COEFF_USAGE =
+    "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] "
+    "[contact eps sigma]', 'pair_coeff I J none' or 'pair_coeff I J file <parameter file> "
+    "wallfluid|wallwall'";
+
+/* ----------------------------------------------------------------------
+   p/2 if p is an even integer, so that (r0/r)^p = powint((r0/r)^2, p/2); else 0
+------------------------------------------------------------------------- */
+
+static int even_half(double p)
+{
+  const double h = 0.5 * p;
+  return (h == floor(h) && h >= 1.0 && h <= 64.0) ? (int) h : 0;
+}
+
+// (r0/r)^p from s = (r0/r)^2
+static inline double ratio_power(double s, double p, int half)
+{
+  return half ? powint(s, half) : pow(s, 0.5 * p);
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairCellWall::PairCellWall(LAMMPS *lmp) : Pair(lmp), cut_global(0.0), coeffs(nullptr)
+{
+  writedata = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairCellWall::~PairCellWall()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(coeffs);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  double **x = atom->x;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const double *special_lj = force->special_lj;
+  const int newton_pair = force->newton_pair;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xtmp = x[i][0];
+    const double ytmp = x[i][1];
+    const double ztmp = x[i][2];
+    const int itype = type[i];
+    const Coeff *coeffi = coeffs[itype];
+    const double *cutsqi = cutsq[itype];
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special_lj[sbmask(j)];
+      if (factor_lj == 0.0) continue;
+      j &= NEIGHMASK;
+
+      const double delx = xtmp - x[j][0];
+      const double dely = ytmp - x[j][1];
+      const double delz = ztmp - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const int jtype = type[j];
+      if (rsq >= cutsqi[jtype]) continue;
+
+      double fpair;
+      const double evdwl = factor_lj * evaluate(coeffi[jtype], rsq, eflag, fpair);
+      fpair *= factor_lj;
+
+      f[i][0] += delx * fpair;
+      f[i][1] += dely * fpair;
+      f[i][2] += delz * fpair;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= delx * fpair;
+        f[j][1] -= dely * fpair;
+        f[j][2] -= delz * fpair;
+      }
+      if (evflag) ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, delx, dely, delz);
+    }
+  }
+
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   all active terms of one pair at squared distance rsq < cutsq: returns the energy (if eflag),
+   sets fpair = F/r (positive = repulsive)
+------------------------------------------------------------------------- */
+
+inline double PairCellWall::evaluate(const Coeff &c, double rsq, int eflag, double &fpair) const
+{
+  double u = 0.0;
+  fpair = 0.0;
+
+  if ((c.terms & REPULSION) && rsq < c.r0sq) {
+    const double s = c.r0sq / rsq;
+    const double a = ratio_power(s, c.p1, c.half1);
+    const double b = ratio_power(s, c.p2, c.half2);
+    // F = f0 [(r0/r)^p1 - (r0/r)^p2] / r for r < r0 (model-notes.md 3.6)
+    fpair += c.f0 * (a - b) / rsq;
+    // U = f0 [((r0/r)^p1 - 1) / p1 - ((r0/r)^p2 - 1) / p2], so U(r0) = 0
+    if (eflag) u += c.f0 * ((a - 1.0) / c.p1 - (b - 1.0) / c.p2);
+  }
+
+  if (c.terms & ADHESION) {
+    if (rsq < c.rasq) {
+      // no force inside ra; U stays at the well bottom -D - U_M(rc)
+      if (eflag) u += c.u_below_ra;
+    } else if (rsq < c.rcsq) {
+      const double r = sqrt(rsq);
+      const double e = exp(-c.alpha * (r - c.ra));
+      // F = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0 (attractive) for ra <= r < rc (model-notes.md 3.7)
+      fpair += c.two_alpha_d * e * (e - 1.0) / r;
+      // U = U_M(r) - U_M(rc), U_M(r) = D [e^-2alpha(r-ra) - 2 e^-alpha(r-ra)]
+      if (eflag) u += c.D * e * (e - 2.0) - c.u_rc;
+    }
+  }
+
+  if ((c.terms & CONTACT) && rsq < c.contactsq) {
+    const double s3 = cube(c.sigsq / rsq);
+    // WCA: F = 24 eps [2 (sigma/r)^12 - (sigma/r)^6] / r for r < 2^(1/6) sigma (model-notes.md 5.4)
+    fpair += 24.0 * c.eps * s3 * (2.0 * s3 - 1.0) / rsq;
+    // U = 4 eps [(sigma/r)^12 - (sigma/r)^6] + eps, zero at the cutoff
+    if (eflag) u += 4.0 * c.eps * s3 * (s3 - 1.0) + c.eps;
+  }
+  return u;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes + 1;
+  memory->create(setflag, n, n, "pair:setflag");
+  for (int i = 1; i < n; i++)
+    for (int j = i; j < n; j++) setflag[i][j] = 0;
+  memory->create(cutsq, n, n, "pair:cutsq");
+  memory->create(coeffs, n, n, "pair:coeffs");
+}
+
+/* ----------------------------------------------------------------------
+   pair_style cell/wall <cutoff>: the longest reach any term may have
+------------------------------------------------------------------------- */
+
+void PairCellWall::settings(int narg, char **arg)
+{
+  if (narg != 1)
+    error->all(FLERR,
+               "Illegal pair_style cell/wall command: expected 'pair_style cell/wall <cutoff>', "
+               "got {} args",
+               narg);
+  cut_global = utils::numeric(FLERR, arg[0], false, lmp);
+  if (!(cut_global > 0.0))
+    error->all(FLERR, "Pair_style cell/wall: cutoff = {} must be > 0", cut_global);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] [contact eps sigma]
+   pair_coeff I J none
+   pair_coeff I J file <parameter file> wallfluid|wallwall
+------------------------------------------------------------------------- */
+
+void PairCellWall::coeff(int narg, char **arg)
+{
+  if (narg < 3) error->all(FLERR, "Incorrect args for pair_coeff cell/wall: {}", COEFF_USAGE);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  Coeff c = {};
+  if (strcmp(arg[2], "file") == 0) {
+    if (narg != 5)
+      error->all(FLERR, "Incorrect args for pair_coeff cell/wall file: {}", COEFF_USAGE);
+    read_file(c, arg[3], arg[4]);
+  } else if (strcmp(arg[2], "none") == 0) {
+    if (narg != 3)
+      error->all(FLERR, "Pair_coeff cell/wall: 'none' takes no other terms; {}", COEFF_USAGE);
+  } else {
+    for (int iarg = 2; iarg < narg;) {
+      int k = 0;
+      while (k < NTERMS && strcmp(arg[iarg], TERM_NAMES[k]) != 0) k++;
+      if (k == NTERMS)
+        error->all(FLERR,
+                   "Pair_coeff cell/wall: unknown keyword '{}' (expected repulsion, adhesion, "
+                   "contact, none or file)",
+                   arg[iarg]);
+      const int term = 1 << k;
+      if (c.terms & term) error->all(FLERR, "Pair_coeff cell/wall: {} given twice", TERM_NAMES[k]);
+      if (iarg + TERM_VALUES[k] >= narg)
+        error->all(FLERR, "Pair_coeff cell/wall: {} needs {} values; {}", TERM_NAMES[k],
+                   TERM_VALUES[k], COEFF_USAGE);
+      double v[4];
+      for (int m = 0; m < TERM_VALUES[k]; m++)
+        v[m] = utils::numeric(FLERR, arg[iarg + 1 + m], false, lmp);
+      iarg += 1 + TERM_VALUES[k];
+      c.terms |= term;
+      if (term == REPULSION) {
+        c.f0 = v[0];
+        c.r0 = v[1];
+        c.p1 = DEFAULT_P1;
+        c.p2 = DEFAULT_P2;
+        // optional exponents: two numbers before the next keyword
+        if (iarg < narg && utils::is_double(arg[iarg])) {
+          if (iarg + 1 >= narg)
+            error->all(FLERR, "Pair_coeff cell/wall: repulsion exponents need two values p1 p2");
+          c.p1 = utils::numeric(FLERR, arg[iarg], false, lmp);
+          c.p2 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+          iarg += 2;
+        }
+      } else if (term == ADHESION) {
+        c.D = v[0];
+        c.alpha = v[1];
+        c.ra = v[2];
+        c.rc = v[3];
+      } else {
+        c.eps = v[0];
+        c.sigma = v[1];
+      }
+    }
+  }
+  check(c);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      coeffs[i][j] = c;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0)
+    error->all(FLERR, "Incorrect args for pair_coeff cell/wall: no type pair I <= J in {} {}",
+               arg[0], arg[1]);
+}
+
+/* ----------------------------------------------------------------------
+   the wallfluid (repulsion, adhesion if adhesion_D > 0) or wallwall (contact) keys of a file
+------------------------------------------------------------------------- */
+
+void PairCellWall::read_file(Coeff &c, const char *file, const char *which)
+{
+  const bool wallfluid = strcmp(which, "wallfluid") == 0;
+  if (!wallfluid && strcmp(which, "wallwall") != 0)
+    error->all(FLERR,
+               "Pair_coeff cell/wall: unknown parameter set '{}' for file {} (expected wallfluid "
+               "or wallwall)",
+               which, file);
+
+  CellParams params(lmp, file, "pair_coeff cell/wall");
+  if (wallfluid) {
+    c.terms = REPULSION;
+    c.f0 = params.positive("wallfluid_f0");
+    c.r0 = params.positive("wallfluid_r0");
+    c.p1 = params.has("wallfluid_p1") ? params.positive("wallfluid_p1") : DEFAULT_P1;
+    c.p2 = params.has("wallfluid_p2") ? params.positive("wallfluid_p2") : DEFAULT_P2;
+    if (params.has("adhesion_D") && params.nonnegative("adhesion_D") > 0.0) {
+      c.terms |= ADHESION;
+      c.D = params.number("adhesion_D");
+      c.alpha = params.positive("adhesion_alpha");
+      c.ra = params.nonnegative("adhesion_ra");
+      c.rc = params.positive("adhesion_rc");
+    }
+  } else {
+    c.terms = CONTACT;
+    c.eps = params.positive("wallwall_eps");
+    c.sigma = params.positive("wallwall_sigma");
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::check(const Coeff &c)
+{
+  if (c.terms & REPULSION) {
+    if (!(c.f0 > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: repulsion f0 = {} must be > 0", c.f0);
+    if (!(c.r0 > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: repulsion r0 = {} must be > 0", c.r0);
+    if (!(c.p2 > 0.0 && c.p1 > c.p2))
+      error->all(FLERR,
+                 "Pair_coeff cell/wall: repulsion exponents p1 = {}, p2 = {} must satisfy p1 > "
+                 "p2 > 0",
+                 c.p1, c.p2);
+  }
+  if (c.terms & ADHESION) {
+    if (!(c.D > 0.0)) error->all(FLERR, "Pair_coeff cell/wall: adhesion D = {} must be > 0", c.D);
+    if (!(c.alpha > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion alpha = {} must be > 0", c.alpha);
+    if (!(c.ra >= 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion ra = {} must be >= 0", c.ra);
+    if (!(c.rc > c.ra))
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion rc = {} must be > ra = {}", c.rc, c.ra);
+  }
+  if (c.terms & CONTACT) {
+    if (!(c.eps > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: contact eps = {} must be > 0", c.eps);
+    if (!(c.sigma > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: contact sigma = {} must be > 0", c.sigma);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   request a half list; warn if contact would act between bonded wall particles
+------------------------------------------------------------------------- */
+
+void PairCellWall::init_style()
+{
+  CellCompat::request_list(neighbor, this, 0, CellCompat::REQ_DEFAULT);
+
+  bool contact = false;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && (coeffs[i][j].terms & CONTACT)) contact = true;
+  const double *special_lj = force->special_lj;
+  if (contact && atom->molecular && (special_lj[1] != 0.0 || special_lj[2] != 0.0) && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair cell/wall: contact acts between bonded wall particles (special_bonds lj "
+                   "weights 1-2 = {}, 1-3 = {}); use 'special_bonds lj 0 0 1'",
+                   special_lj[1], special_lj[2]);
+}
+
+/* ----------------------------------------------------------------------
+   constants of pair i,j; its cutoff is the longest reach of its active terms
+------------------------------------------------------------------------- */
+
+double PairCellWall::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR,
+               "Pair cell/wall: no pair_coeff for atom types {} {} (cell/wall does not mix; use "
+               "'pair_coeff {} {} none' for a pair without interaction)",
+               i, j, i, j);
+
+  Coeff &c = coeffs[i][j];
+  double cut = 0.0;
+  const char *longest = "none";
+  if (c.terms & REPULSION) {
+    c.r0sq = c.r0 * c.r0;
+    c.half1 = even_half(c.p1);
+    c.half2 = even_half(c.p2);
+    cut = c.r0;
+    longest = "repulsion r0";
+  }
+  if (c.terms & ADHESION) {
+    c.rasq = c.ra * c.ra;
+    c.rcsq = c.rc * c.rc;
+    c.two_alpha_d = 2.0 * c.alpha * c.D;
+    const double ec = exp(-c.alpha * (c.rc - c.ra));
+    // U_M(rc) = D [e^-2alpha(rc-ra) - 2 e^-alpha(rc-ra)]; U inside ra = U_M(ra) - U_M(rc)
+    c.u_rc = c.D * ec * (ec - 2.0);
+    c.u_below_ra = -c.D - c.u_rc;
+    if (c.rc > cut) {
+      cut = c.rc;
+      longest = "adhesion rc";
+    }
+  }
+  if (c.terms & CONTACT) {
+    c.sigsq = c.sigma * c.sigma;
+    // WCA cutoff 2^(1/6) sigma
+    c.contactsq = cbrt(2.0) * c.sigsq;
+    if (sqrt(c.contactsq) > cut) {
+      cut = sqrt(c.contactsq);
+      longest = "contact cutoff 2^(1/6) sigma";
+    }
+  }
+  if (cut > cut_global)
+    error->all(FLERR,
+               "Pair cell/wall: atom types {} {} reach {} ({}), beyond the pair_style cell/wall "
+               "cutoff {}",
+               i, j, cut, longest, cut_global);
+
+  coeffs[j][i] = c;
+  return cut;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        const Coeff &c = coeffs[i][j];
+        const double v[NPARAM] = {c.f0, c.r0, c.p1, c.p2, c.D, c.alpha, c.ra, c.rc, c.eps, c.sigma};
+        fwrite(&c.terms, sizeof(int), 1, fp);
+        fwrite(v, sizeof(double), NPARAM, fp);
+      }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        int terms = 0;
+        double v[NPARAM];
+        if (me == 0) {
+          utils::sfread(FLERR, &terms, sizeof(int), 1, fp, nullptr, error);
+          utils::sfread(FLERR, v, sizeof(double), NPARAM, fp, nullptr, error);
+        }
+        MPI_Bcast(&terms, 1, MPI_INT, 0, world);
+        MPI_Bcast(v, NPARAM, MPI_DOUBLE, 0, world);
+        Coeff c = {};
+        c.terms = terms;
+        c.f0 = v[0];
+        c.r0 = v[1];
+        c.p1 = v[2];
+        c.p2 = v[3];
+        c.D = v[4];
+        c.alpha = v[5];
+        c.ra = v[6];
+        c.rc = v[7];
+        c.eps = v[8];
+        c.sigma = v[9];
+        coeffs[i][j] = c;
+      }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::write_restart_settings(FILE *fp)
+{
+  fwrite(&cut_global, sizeof(double), 1, fp);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
+}
+
+/* ----------------------------------------------------------------------
+   the terms of one pair in pair_coeff syntax (after the types)
+------------------------------------------------------------------------- */
+
+std::string PairCellWall::describe(const Coeff &c) const
+{
+  std::string s;
+  if (c.terms & REPULSION)
+    s += fmt::format(" repulsion {:.17g} {:.17g} {:.17g} {:.17g}", c.f0, c.r0, c.p1, c.p2);
+  if (c.terms & ADHESION)
+    s += fmt::format(" adhesion {:.17g} {:.17g} {:.17g} {:.17g}", c.D, c.alpha, c.ra, c.rc);
+  if (c.terms & CONTACT) s += fmt::format(" contact {:.17g} {:.17g}", c.eps, c.sigma);
+  return s.empty() ? " none" : s;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++) fmt::print(fp, "{}{}\n", i, describe(coeffs[i][i]));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      fmt::print(fp, "{} {}{}\n", i, j, describe(coeffs[i][j]));
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairCellWall::single(int /*i*/, int /*j*/, int itype, int jtype, double rsq,
+                            double /*factor_coul*/, double factor_lj, double &fforce)
+{
+  double fpair;
+  const double u = evaluate(coeffs[itype][jtype], rsq, 1, fpair);
+  fforce = factor_lj * fpair;
+  return factor_lj * u;
+}

@@ -1,0 +1,58 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   pair_style cell/wall: wall-fluid repulsion F^rw/F^rf, wall-fluid adhesion F^a and non-bonded
+   wall-wall contact (design.md section 1)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_CELL_WALL_H
+#define LMP_PAIR_CELL_WALL_H
+
+#include "pair.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class PairCellWall : public Pair {
+ public:
+  PairCellWall(class LAMMPS *);
+  ~PairCellWall() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+
+  enum Term { REPULSION = 1 << 0, ADHESION = 1 << 1, CONTACT = 1 << 2 };
+
+  // the terms of one type pair: parameters as given, then constants precomputed in init_one()
+  struct Coeff {
+    int terms;                  // bitmask of Term
+    double f0, r0, p1, p2;      // repulsion
+    double D, alpha, ra, rc;    // adhesion
+    double eps, sigma;          // contact
+    int half1, half2;           // p1/2, p2/2 when they are integers (powint), else 0
+    double r0sq, rasq, rcsq, two_alpha_d, u_rc, u_below_ra, sigsq, contactsq;
+  };
+
+ protected:
+  double cut_global;
+  Coeff **coeffs;
+
+  void allocate();
+  double evaluate(const Coeff &, double, int, double &) const;
+  std::string describe(const Coeff &) const;
+  void read_file(Coeff &, const char *, const char *);
+  void check(const Coeff &);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
