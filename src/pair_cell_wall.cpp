@@ -223,10 +223,12 @@ void PairCellWall::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
   Coeff c = {};
+  std::string from;
   if (strcmp(arg[2], "file") == 0) {
     if (narg != 5)
       error->all(FLERR, "Incorrect args for pair_coeff cell/wall file: {}", COEFF_USAGE);
     read_file(c, arg[3], arg[4]);
+    from = fmt::format(" (parameter file {})", arg[3]);
   } else if (strcmp(arg[2], "none") == 0) {
     if (narg != 3)
       error->all(FLERR, "Pair_coeff cell/wall: 'none' takes no other terms; {}", COEFF_USAGE);
@@ -273,7 +275,7 @@ void PairCellWall::coeff(int narg, char **arg)
       }
     }
   }
-  check(c);
+  check(c, from);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
@@ -323,33 +325,35 @@ void PairCellWall::read_file(Coeff &c, const char *file, const char *which)
 
 /* ---------------------------------------------------------------------- */
 
-void PairCellWall::check(const Coeff &c)
+void PairCellWall::check(const Coeff &c, const std::string &from)
 {
   if (c.terms & REPULSION) {
     if (!(c.f0 > 0.0))
-      error->all(FLERR, "Pair_coeff cell/wall: repulsion f0 = {} must be > 0", c.f0);
+      error->all(FLERR, "Pair_coeff cell/wall: repulsion f0 = {} must be > 0{}", c.f0, from);
     if (!(c.r0 > 0.0))
-      error->all(FLERR, "Pair_coeff cell/wall: repulsion r0 = {} must be > 0", c.r0);
+      error->all(FLERR, "Pair_coeff cell/wall: repulsion r0 = {} must be > 0{}", c.r0, from);
     if (!(c.p2 > 0.0 && c.p1 > c.p2))
       error->all(FLERR,
                  "Pair_coeff cell/wall: repulsion exponents p1 = {}, p2 = {} must satisfy p1 > "
-                 "p2 > 0",
-                 c.p1, c.p2);
+                 "p2 > 0{}",
+                 c.p1, c.p2, from);
   }
   if (c.terms & ADHESION) {
-    if (!(c.D > 0.0)) error->all(FLERR, "Pair_coeff cell/wall: adhesion D = {} must be > 0", c.D);
+    if (!(c.D > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion D = {} must be > 0{}", c.D, from);
     if (!(c.alpha > 0.0))
-      error->all(FLERR, "Pair_coeff cell/wall: adhesion alpha = {} must be > 0", c.alpha);
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion alpha = {} must be > 0{}", c.alpha, from);
     if (!(c.ra >= 0.0))
-      error->all(FLERR, "Pair_coeff cell/wall: adhesion ra = {} must be >= 0", c.ra);
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion ra = {} must be >= 0{}", c.ra, from);
     if (!(c.rc > c.ra))
-      error->all(FLERR, "Pair_coeff cell/wall: adhesion rc = {} must be > ra = {}", c.rc, c.ra);
+      error->all(FLERR, "Pair_coeff cell/wall: adhesion rc = {} must be > ra = {}{}", c.rc, c.ra,
+                 from);
   }
   if (c.terms & CONTACT) {
     if (!(c.eps > 0.0))
-      error->all(FLERR, "Pair_coeff cell/wall: contact eps = {} must be > 0", c.eps);
+      error->all(FLERR, "Pair_coeff cell/wall: contact eps = {} must be > 0{}", c.eps, from);
     if (!(c.sigma > 0.0))
-      error->all(FLERR, "Pair_coeff cell/wall: contact sigma = {} must be > 0", c.sigma);
+      error->all(FLERR, "Pair_coeff cell/wall: contact sigma = {} must be > 0{}", c.sigma, from);
   }
 }
 
@@ -503,11 +507,9 @@ void PairCellWall::read_restart_settings(FILE *fp)
 std::string PairCellWall::describe(const Coeff &c) const
 {
   std::string s;
-  if (c.terms & REPULSION)
-    s += fmt::format(" repulsion {:.17g} {:.17g} {:.17g} {:.17g}", c.f0, c.r0, c.p1, c.p2);
-  if (c.terms & ADHESION)
-    s += fmt::format(" adhesion {:.17g} {:.17g} {:.17g} {:.17g}", c.D, c.alpha, c.ra, c.rc);
-  if (c.terms & CONTACT) s += fmt::format(" contact {:.17g} {:.17g}", c.eps, c.sigma);
+  if (c.terms & REPULSION) s += fmt::format(" repulsion {} {} {} {}", c.f0, c.r0, c.p1, c.p2);
+  if (c.terms & ADHESION) s += fmt::format(" adhesion {} {} {} {}", c.D, c.alpha, c.ra, c.rc);
+  if (c.terms & CONTACT) s += fmt::format(" contact {} {}", c.eps, c.sigma);
   return s.empty() ? " none" : s;
 }
 

@@ -50,7 +50,7 @@ class PairCellWall : public Pair {
   double evaluate(const Coeff &, double, int, double &) const;
   std::string describe(const Coeff &) const;
   void read_file(Coeff &, const char *, const char *);
-  void check(const Coeff &);
+  void check(const Coeff &, const std::string &);
 };
 
 }    // namespace LAMMPS_NS
