@@ -22,18 +22,22 @@ constexpr const char *kVersion = "cellgen 1.0";
 constexpr double kPi = 3.14159265358979323846;
 
 constexpr const char *kUsage =
-    "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--nfluid M=1624] [--dx DX] [--gap G]\n"
-    "               [--rho0 1000] [--wall-mass MW] [--cells NX NY NZ] [--spacing S]\n"
-    "               [--radius-spread F] [--seed 1] --out FILE.data\n"
+    "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--mesh icosahedral|spiral]\n"
+    "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
+    "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
+    "               --out FILE.data\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+enum class Mesh { Icosahedral, Spiral };
+
 struct Options {
   double radius = 75e-6;
   long nwall = 1091;
+  Mesh mesh = Mesh::Icosahedral;
   long nfluid = 1624;
   std::optional<double> dx, gap, wallMass, spacing;
   double rho0 = 1000.0;
@@ -94,6 +98,16 @@ const std::map<std::string, Handler> &optionHandlers()
   static const std::map<std::string, Handler> handlers = {
       {"--radius", [](ArgReader &a, Options &o) { o.radius = a.real(); }},
       {"--nwall", [](ArgReader &a, Options &o) { o.nwall = a.integer(); }},
+      {"--mesh",
+       [](ArgReader &a, Options &o) {
+         const std::string kind = a.word();
+         if (kind == "icosahedral")
+           o.mesh = Mesh::Icosahedral;
+         else if (kind == "spiral")
+           o.mesh = Mesh::Spiral;
+         else
+           throw UsageError("--mesh must be icosahedral or spiral, not '" + kind + "'");
+       }},
       {"--nfluid", [](ArgReader &a, Options &o) { o.nfluid = a.integer(); }},
       {"--dx", [](ArgReader &a, Options &o) { o.dx = a.real(); }},
       {"--gap", [](ArgReader &a, Options &o) { o.gap = a.real(); }},
@@ -162,11 +176,15 @@ std::string commandLine(int argc, char **argv)
 using File = std::unique_ptr<std::FILE, int (*)(std::FILE *)>;
 
 // Per-type mass of the Masses section: that of cell 1 (CellAtoms holds every atom's own mass).
+// Walls only (--nfluid 0): no atom has type 1, which gets the wall mass as a placeholder.
 double typeMass(const System &sys, ParticleType type)
 {
-  return std::find_if(sys.particles.begin(), sys.particles.end(),
-                      [type](const Particle &p) { return p.type == type; })
-      ->mass;
+  auto first = std::find_if(sys.particles.begin(), sys.particles.end(),
+                            [type](const Particle &p) { return p.type == type; });
+  if (first == sys.particles.end())
+    first = std::find_if(sys.particles.begin(), sys.particles.end(),
+                         [](const Particle &p) { return p.type == kWall; });
+  return first->mass;
 }
 
 void writeHeader(std::FILE *f, const System &sys, const std::string &comment)
@@ -252,16 +270,46 @@ Totals totals(const System &sys, const std::vector<CellSpec> &cells, const Surfa
   return t;
 }
 
+// How the wall was meshed, e.g. "icosahedral (h, k) = (7, 5), T = 109" or "spiral".
+struct WallMesh {
+  Surface unit;
+  std::string description;
+};
+
+WallMesh wallMesh(const Options &o)
+{
+  if (o.mesh == Mesh::Spiral)
+    return {spiralSurface(static_cast<int>(o.nwall)), "spiral (golden spiral + relaxation)"};
+  const GeodesicClass c = chooseGeodesic(o.nwall);
+  const char *kind = c.k == 0 ? "I" : (c.k == c.h ? "II" : "III");
+  return {icosahedralSurface(c),
+          "icosahedral class " + std::string(kind) + ", (h, k) = (" + std::to_string(c.h) + ", " +
+              std::to_string(c.k) + "), T = " + std::to_string(c.triangulationNumber())};
+}
+
+std::string valenceSummary(const SurfaceStats &st)
+{
+  std::string s;
+  for (size_t z = 0; z < st.valence.size(); ++z)
+    if (st.valence[z] > 0)
+      s += (s.empty() ? "" : ", ") + std::to_string(st.valence[z]) + " x " + std::to_string(z);
+  return s;
+}
+
 void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, const Totals &t,
-                  double seconds)
+                  const WallMesh &mesh, const SurfaceStats &st, double seconds)
 {
   const std::string chosen = o.dx ? "" : " (chosen for " + std::to_string(o.nfluid) + " fluid)";
   std::printf("%s: %zu cell(s), R = %g m (spread %g), DX = %g m%s, gap = %g m\n", kVersion, t.cells,
               o.radius, o.spread, sp.dx, chosen.c_str(), sp.gap);
-  std::printf("particles: %ld fluid (%ld to %ld per cell), %ld wall (%ld per cell); %zu bonds, "
+  const size_t perCell = mesh.unit.points.size();
+  std::printf("wall mesh: %s: %zu wall particles per cell (--nwall %ld)\n",
+              mesh.description.c_str(), perCell, o.nwall);
+  std::printf("particles: %ld fluid (%ld to %ld per cell), %ld wall (%zu per cell); %zu bonds, "
               "%zu triangles\n",
-              t.fluid, t.minFluid, t.maxFluid, t.wall, o.nwall, sys.bonds.size(),
+              t.fluid, t.minFluid, t.maxFluid, t.wall, perCell, sys.bonds.size(),
               sys.triangles.size());
+  std::printf("wall valence (particles x bonds): %s\n", valenceSummary(st).c_str());
   std::printf("wall bond length: min %g, mean %g, max %g m (max/min %.3f)\n", t.minEdge, t.meanEdge,
               t.maxEdge, t.maxEdge / t.minEdge);
   std::printf("enclosed volume %g m^3 = %.5f x spheres; area %g m^2 = %.5f x spheres\n", t.volume,
@@ -296,7 +344,8 @@ void run(const Options &o, const std::string &args)
                                   static_cast<int>(o.cells[2])};
   const std::vector<CellSpec> cells = cellLattice(counts, spacing, o.radius, o.spread, o.seed);
   checkNoOverlap(cells);
-  const Surface unit = unitSphereSurface(static_cast<int>(o.nwall));
+  const WallMesh mesh = wallMesh(o);
+  const Surface &unit = mesh.unit;
   BuildParams params;
   params.spacing = sp;
   params.rho0 = o.rho0;
@@ -304,10 +353,11 @@ void run(const Options &o, const std::string &args)
   params.wallMass = o.wallMass;
   params.boxMargin = 0.5 * o.radius;
   const System sys = buildSystem(unit, cells, params);
-  const Totals t = totals(sys, cells, surfaceStats(unit));
+  const SurfaceStats stats = surfaceStats(unit);
+  const Totals t = totals(sys, cells, stats);
   writeData(o.out, sys, comment(o, args, sp, t));
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  printSummary(o, sp, sys, t, elapsed.count());
+  printSummary(o, sp, sys, t, mesh, stats, elapsed.count());
 }
 
 }    // namespace
