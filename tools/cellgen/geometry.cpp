@@ -286,7 +286,7 @@ namespace {
     const long euler = static_cast<long>(n) - static_cast<long>(edges.size()) +
         static_cast<long>(triangles.size());
     if (!uniqueDirected || 2 * edges.size() != directed.size() || euler != 2)
-      throw std::runtime_error("unitSphereSurface: triangulation is not a closed sphere (V-E+F=" +
+      throw std::runtime_error("sphereSurface: triangulation is not a closed sphere (V-E+F=" +
                                std::to_string(euler) + ")");
   }
 
@@ -386,20 +386,110 @@ std::vector<Edge> uniqueEdges(const std::vector<Tri> &triangles)
   return edges;
 }
 
-Surface unitSphereSurface(int n)
+Surface sphereSurface(std::vector<Vec3> points)
 {
   Surface s;
-  s.points = fibonacciSphere(n);
-  relaxOnSphere(s.points, 40);
+  s.points = std::move(points);
   s.triangles = convexHull(s.points);
   s.edges = uniqueEdges(s.triangles);
-  checkClosedSphere(s.triangles, s.edges, n);
+  checkClosedSphere(s.triangles, s.edges, static_cast<int>(s.points.size()));
   for (const Tri &t : s.triangles) {
     const Vec3 &a = s.points[t[0]];
     if ((s.points[t[1]] - a).cross(s.points[t[2]] - a).dot(a) <= 0.0)
-      throw std::runtime_error("unitSphereSurface: inward triangle");
+      throw std::runtime_error("sphereSurface: inward triangle");
   }
   return s;
+}
+
+Surface spiralSurface(int n)
+{
+  std::vector<Vec3> points = fibonacciSphere(n);
+  relaxOnSphere(points, 40);
+  return sphereSurface(std::move(points));
+}
+
+GeodesicClass chooseGeodesic(long n)
+{
+  // candidates T up to the first class-I T beyond the target: h^2 >= (n - 2) / 10
+  const int hmax = static_cast<int>(std::ceil(std::sqrt(std::max(0.0, (n - 2) / 10.0)))) + 1;
+  GeodesicClass best;
+  auto worse = [n](const GeodesicClass &a, const GeodesicClass &b) {
+    // true if b is preferred to a: closer to n, then class I, then smaller k, then smaller T
+    const long da = std::labs(a.points() - n), db = std::labs(b.points() - n);
+    if (db != da) return db < da;
+    if ((b.k == 0) != (a.k == 0)) return b.k == 0;
+    if (b.k != a.k) return b.k < a.k;
+    return b.triangulationNumber() < a.triangulationNumber();
+  };
+  for (int h = 1; h <= hmax; ++h)
+    for (int k = 0; k <= h; ++k) {
+      const GeodesicClass c{h, k};
+      if (worse(best, c)) best = c;
+    }
+  return best;
+}
+
+std::vector<Vec3> geodesicSphere(const GeodesicClass &c)
+{
+  const double t = 0.5 * (1.0 + std::sqrt(5.0));    // golden ratio
+  const std::array<Vec3, 12> v = {Vec3(-1, t, 0), Vec3(1, t, 0), Vec3(-1, -t, 0), Vec3(1, -t, 0),
+                                  Vec3(0, -1, t), Vec3(0, 1, t), Vec3(0, -1, -t), Vec3(0, 1, -t),
+                                  Vec3(t, 0, -1), Vec3(t, 0, 1), Vec3(-t, 0, -1), Vec3(-t, 0, 1)};
+  std::array<Tri, 20> faces = {Tri{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                               {1, 5, 9},     {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                               {3, 9, 4},     {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                               {4, 9, 5},     {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  // every face counter-clockwise seen from outside, so that all faces carry the same chirality
+  for (Tri &f : faces)
+    if ((v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).dot(v[f[0]]) < 0.0) std::swap(f[1], f[2]);
+
+  const long h = c.h, k = c.k, T = c.triangulationNumber();
+  std::vector<Vec3> points;
+  for (const Vec3 &x : v) points.push_back(x.normalized());
+  std::map<std::array<long, 3>, int> edgePoints;    // (lower vertex, upper vertex, its weight)
+  std::vector<Vec3> interior;
+  for (const Tri &f : faces) {
+    // Lattice point i e1 + j e2 (e1, e2 unit vectors 60 degrees apart) in the face triangle with
+    // corners 0, (h, k) and (-k, h + k) (the first rotated by 60 degrees); its barycentric
+    // weights are n0/T, n1/T, n2/T: inside or on the triangle iff all are >= 0 (exact integers).
+    for (long i = -k; i <= h; ++i)
+      for (long j = 0; j <= h + k; ++j) {
+        const long n1 = (h + k) * i + k * j, n2 = h * j - k * i, n0 = T - n1 - n2;
+        if (n0 < 0 || n1 < 0 || n2 < 0) continue;
+        const std::array<long, 3> w = {n0, n1, n2};
+        const int zeros = (n0 == 0) + (n1 == 0) + (n2 == 0);
+        if (zeros == 2) continue;    // an icosahedron vertex, already listed
+        const Vec3 x = (static_cast<double>(n0) * v[f[0]] + static_cast<double>(n1) * v[f[1]] +
+                        static_cast<double>(n2) * v[f[2]]) /
+            static_cast<double>(T);
+        if (zeros == 0) {
+          interior.push_back(x.normalized());
+          continue;
+        }
+        // on an edge shared with the neighbouring face: keep one copy, named by its end vertices
+        const int m0 = n0 == 0 ? 1 : 0, m1 = n2 == 0 ? 1 : 2;    // the two nonzero weights
+        const bool lowerFirst = f[m0] < f[m1];
+        const long a = lowerFirst ? f[m0] : f[m1], b = lowerFirst ? f[m1] : f[m0];
+        const long wa = lowerFirst ? w[m0] : w[m1];
+        if (edgePoints.emplace(std::array<long, 3>{a, b, wa}, 0).second) {
+          // recompute from the ordered pair, so both faces would give the same coordinates
+          const Vec3 y = (static_cast<double>(wa) * v[a] + static_cast<double>(T - wa) * v[b]) /
+              static_cast<double>(T);
+          points.push_back(y.normalized());
+        }
+      }
+  }
+  points.insert(points.end(), interior.begin(), interior.end());
+  if (static_cast<long>(points.size()) != c.points())
+    throw std::runtime_error("geodesicSphere: " + std::to_string(points.size()) +
+                             " points for (h, k) = (" + std::to_string(c.h) + ", " +
+                             std::to_string(c.k) + "), expected " + std::to_string(c.points()));
+  return points;
+}
+
+Surface icosahedralSurface(const GeodesicClass &c)
+{
+  return sphereSurface(geodesicSphere(c));
 }
 
 SurfaceStats surfaceStats(const Surface &surface)
@@ -417,6 +507,15 @@ SurfaceStats surfaceStats(const Surface &surface)
     st.area += 0.5 * (b - a).cross(c - a).norm();
     // divergence theorem: each triangle adds the signed volume of its tetrahedron with the origin
     st.volume += a.dot(b.cross(c)) / 6.0;
+  }
+  std::vector<int> degree(surface.points.size(), 0);
+  for (const Edge &e : surface.edges) {
+    ++degree[e[0]];
+    ++degree[e[1]];
+  }
+  for (int z : degree) {
+    if (static_cast<size_t>(z) >= st.valence.size()) st.valence.resize(z + 1, 0);
+    ++st.valence[z];
   }
   return st;
 }

@@ -20,6 +20,26 @@ using Edge = std::array<int, 2>;
 std::vector<Vec3> fibonacciSphere(int n);
 void relaxOnSphere(std::vector<Vec3> &points, int iterations);
 
+// Goldberg-Coxeter class of a geodesic icosahedral mesh: every icosahedron face is covered by the
+// triangular lattice so that its vertices sit at lattice vectors (h, k) apart; T = h^2 + hk + k^2
+// lattice triangles per face and 10 T + 2 vertices. Class I: k = 0; II: h = k; III: otherwise.
+struct GeodesicClass {
+  int h = 1, k = 0;
+  long triangulationNumber() const
+  {
+    return static_cast<long>(h) * h + static_cast<long>(h) * k + static_cast<long>(k) * k;
+  }
+  long points() const { return 10 * triangulationNumber() + 2; }
+};
+
+// The (h, k), h >= k >= 0, whose 10 T + 2 is closest to n; ties go to class I (k = 0), then to
+// the smaller k, then to the smaller T.
+GeodesicClass chooseGeodesic(long n);
+
+// Vertices of the (h, k) geodesic subdivision of the icosahedron, projected onto the unit sphere:
+// the 12 icosahedron vertices, then the points inside its edges, then those inside its faces.
+std::vector<Vec3> geodesicSphere(const GeodesicClass &c);
+
 // Convex hull of points in strictly convex position (e.g. on a sphere), every triangle oriented
 // outward. Orientation tests are exact (integer arithmetic on coordinates snapped to 2^-39).
 std::vector<Tri> convexHull(const std::vector<Vec3> &points);
@@ -34,12 +54,20 @@ struct Surface {
   std::vector<Edge> edges;
 };
 
-// Builds the unit-sphere wall of n points and checks it is a closed, outward, genus-0 manifold.
-Surface unitSphereSurface(int n);
+// Triangulates points on the unit sphere (convex hull = spherical Delaunay triangulation) and
+// checks the result is a closed, outward, genus-0 manifold on all of them.
+Surface sphereSurface(std::vector<Vec3> points);
+
+// The wall of n golden-spiral points relaxed by 40 repulsion steps (--mesh spiral).
+Surface spiralSurface(int n);
+
+// The wall of the (h, k) geodesic icosahedron, 10 T + 2 points (--mesh icosahedral).
+Surface icosahedralSurface(const GeodesicClass &c);
 
 struct SurfaceStats {
   double minEdge = 0, meanEdge = 0, maxEdge = 0;
   double area = 0, volume = 0;
+  std::vector<long> valence;    // valence[z] = number of points with z bonds
 };
 SurfaceStats surfaceStats(const Surface &surface);
 

@@ -8,8 +8,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failed=0
 
-# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL
+# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL GEODESIC
 # FLUID_TOL / VOLUME_TOL are relative; 0 skips the fluid-count / volume-accuracy test.
+# GEODESIC = 1: every cell's wall has exactly 12 particles with 5 bonds and all others 6.
 check_data() {
   awk -v wall_expect="$2" -v fluid_target="$3" -v fluid_tol="$4" -v vol_tol="$5" '
     function fail(msg) { print "  FAIL: " msg; bad++ }
@@ -27,11 +28,11 @@ check_data() {
     section == "Atoms" {
       n_atoms++; mol[$1] = $2; type[$1] = $3; x[$1] = $4; y[$1] = $5; z[$1] = $6; xs[$1] = $4 " " $5 " " $6
       if ($2 > nmol) nmol = $2
-      if ($3 == 2) nv[$2]++
+      if ($3 == 2) { nv[$2]++; wx[$2] += $4; wy[$2] += $5; wz[$2] += $6 }
       else { nfl[$2]++; cx[$2] += $4; cy[$2] += $5; cz[$2] += $6 }
     }
     section == "Bonds" {
-      n_bonds++; ne[mol[$3]]++
+      n_bonds++; ne[mol[$3]]++; deg[$3]++; deg[$4]++
       if (bond[ekey($3, $4)]++) fail("duplicate bond " $3 "-" $4)
     }
     section == "Angles" {
@@ -57,7 +58,9 @@ check_data() {
         if (nv[m] - ne[m] + nf[m] != 2) fail("cell " m ": V-E+F = " nv[m] - ne[m] + nf[m])
         if (nv[m] != wall_expect) fail("cell " m ": " nv[m] " wall particles, expected " wall_expect)
         if (fluid_tol > 0 && abs(nfl[m] / fluid_target - 1) > fluid_tol) fail("cell " m ": " nfl[m] " fluid")
-        cx[m] /= nfl[m]; cy[m] /= nfl[m]; cz[m] /= nfl[m]
+        # centre: the fluid centroid, or the wall centroid for walls only
+        if (nfl[m] > 0) { cx[m] /= nfl[m]; cy[m] /= nfl[m]; cz[m] /= nfl[m] }
+        else { cx[m] = wx[m] / nv[m]; cy[m] = wy[m] / nv[m]; cz[m] = wz[m] / nv[m] }
       }
       for (i in type) {
         m = mol[i]; dx = x[i] - cx[m]; dy = y[i] - cy[m]; dz = z[i] - cz[m]
@@ -79,6 +82,11 @@ check_data() {
         if (v6 <= 0) inward++
       }
       if (inward) fail(inward " triangle(s) not outward")
+      if (geodesic) {
+        for (i in type) if (type[i] == 2) { if (deg[i] == 5) n5[mol[i]]++; else if (deg[i] != 6) other++ }
+        if (other) fail(other " wall particle(s) with neither 5 nor 6 bonds")
+        for (m = 1; m <= nmol; m++) if (n5[m] != 12) fail("cell " m ": " n5[m] + 0 " particles with 5 bonds, expected 12")
+      }
       for (m = 1; m <= nmol; m++) {
         exact = 4 / 3 * pi * rad[m] ^ 3
         if (vol[m] <= 0) fail("cell " m ": enclosed volume " vol[m] " <= 0")
@@ -86,16 +94,18 @@ check_data() {
       }
       printf "  %d cell(s), %d atoms, %d bonds, %d triangles, gap %g\n", nmol, n_atoms, n_bonds, n_angles, gap
       exit bad > 0
-    }' nmol_single="$6" "$1"
+    }' nmol_single="$6" geodesic="${7:-0}" "$1"
 }
 
 # run NAME WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL -- cellgen args...
+# Without --mesh spiral the wall must be a geodesic icosahedron (12 five-bonded particles).
 run() {
-  local name=$1 wall=$2 fluid=$3 ftol=$4 vtol=$5 single=$6
+  local name=$1 wall=$2 fluid=$3 ftol=$4 vtol=$5 single=$6 geodesic=1
   shift 7
+  case " $* " in *" --mesh spiral "*) geodesic=0 ;; esac
   echo "[$name] cellgen $*"
   if "$bin" "$@" --out "$tmp/$name.data" >"$tmp/$name.log" 2>&1 &&
-    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single"; then
+    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single" "$geodesic"; then
     echo "  ok"
   else
     cat "$tmp/$name.log"
@@ -116,11 +126,35 @@ expect_error() {
   fi
 }
 
-run default 1091 1624 0.05 0.03 1 --
-run fine 4000 5000 0.05 0.03 1 -- --nwall 4000 --nfluid 5000 --rho0 1100
+# icosahedral (default): 10 T + 2 wall particles, T = h^2 + hk + k^2 closest to --nwall
+run default 1092 1624 0.05 0.03 1 --
+run fine 4002 5000 0.05 0.03 1 -- --nwall 4000 --nfluid 5000 --rho0 1100
 run tiny 12 10 0 0 1 -- --nwall 12 --nfluid 10 --radius 1e-5
-run lattice 300 0 0 0.03 0 -- --cells 3 2 2 --radius-spread 0.2 --seed 7 --nwall 300 --dx 12e-6
-run gap 500 0 0 0.03 1 -- --nwall 500 --dx 8e-6 --gap 10e-6 --wall-mass 1e-12
+run lattice 312 0 0 0.03 0 -- --cells 3 2 2 --radius-spread 0.2 --seed 7 --nwall 300 --dx 12e-6
+run gap 492 0 0 0.03 1 -- --nwall 500 --dx 8e-6 --gap 10e-6 --wall-mass 1e-12
+run walls-only 1092 0 0 0.03 1 -- --nfluid 0
+# spiral: exactly --nwall particles
+run spiral 1091 1624 0.05 0.03 1 -- --mesh spiral
+run spiral-lattice 300 0 0 0.03 0 -- --mesh spiral --cells 2 1 2 --nwall 300 --dx 12e-6
+run spiral-tiny 4 10 0 0 1 -- --mesh spiral --nwall 4 --nfluid 10 --radius 1e-5
+
+echo "[geodesic class] the (h, k) chosen for --nwall (nearest 10T+2; ties: class I, smaller k)"
+for c in "4 1 0 12" "27 1 1 32" "37 2 0 42" "300 5 1 312" "500 7 0 492" "912 9 1 912" \
+  "1091 7 5 1092" "1472 11 2 1472" "4000 20 0 4002" "10000 30 3 9992"; do
+  set -- $c
+  line=$("$bin" --nwall "$1" --nfluid 0 --out "$tmp/class.data" | grep '^wall mesh:' || true)
+  if [[ "$line" == *"(h, k) = ($2, $3)"*": $4 wall particles per cell"* ]]; then
+    echo "  ok: --nwall $1 -> ($2, $3), $4"
+  else
+    echo "  FAIL: --nwall $1: expected ($2, $3), $4; got: $line"
+    failed=1
+  fi
+done
+
+echo "[walls only] the Masses section holds a positive, finite mass for the absent fluid type"
+"$bin" --nfluid 0 --nwall 300 --out "$tmp/w.data" >/dev/null
+if awk '$1 == "Masses" { s = 1; next } s && NF == 2 { if (!($2 > 0 && $2 < 1)) bad = 1; n++ } s && n == 2 { exit }
+  END { exit bad || n != 2 }' "$tmp/w.data"; then echo "  ok"; else echo "  FAIL: bad Masses"; failed=1; fi
 
 echo "[determinism] same seed, same file (apart from the comment line naming it)"
 "$bin" --cells 2 2 1 --radius-spread 0.1 --seed 3 --nwall 200 --out "$tmp/a.data" >/dev/null
@@ -132,6 +166,7 @@ expect_error badnumber -- --radius 75um
 expect_error unknown -- --bogus 1
 expect_error twod -- --2d
 expect_error gap-too-large -- --gap 80e-6
+expect_error bad-mesh -- --mesh cubic
 
 if [ "$failed" -ne 0 ]; then
   echo "test_cellgen: FAILED"
