@@ -6,6 +6,7 @@
 
 #include "comm.h"
 #include "error.h"
+#include "update.h"
 #include "utils.h"
 
 #include <cerrno>
@@ -20,15 +21,29 @@ using namespace LAMMPS_NS;
 CellParams::CellParams(LAMMPS *lmp, const std::string &file_in, const std::string &command_in) :
     Pointers(lmp), file(file_in), command(command_in)
 {
-  std::string text;
+  std::string text, problem;
   if (comm->me == 0) {
-    FILE *fp = utils::open_potential(file, lmp, nullptr);
-    if (!fp) error->one(FLERR, "{}: cannot open parameter file {}", command, file);
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof(buf), fp)) > 0) text.append(buf, n);
-    fclose(fp);
+    const std::string path = find_file(file);
+    const std::string units = path.empty() ? "" : utils::get_potential_units(path, "parameter");
+    FILE *fp = nullptr;
+    if (path.empty() || !(fp = fopen(path.c_str(), "r")))
+      problem = fmt::format("cannot open parameter file {}", file);
+    else if (units != update->unit_style)
+      problem = fmt::format("{} line 1: 'UNITS: {}' but the input uses {} units", file, units,
+                            update->unit_style);
+    if (fp) {
+      char buf[4096];
+      size_t n;
+      while ((n = fread(buf, 1, sizeof(buf), fp)) > 0) text.append(buf, n);
+      fclose(fp);
+    }
   }
+  int plen = (int) problem.size();
+  MPI_Bcast(&plen, 1, MPI_INT, 0, world);
+  problem.resize(plen);
+  MPI_Bcast(&problem[0], plen, MPI_CHAR, 0, world);
+  if (!problem.empty()) error->all(FLERR, "{}: {}", command, problem);
+
   int size = (int) text.size();
   MPI_Bcast(&size, 1, MPI_INT, 0, world);
   text.resize(size);
@@ -47,6 +62,25 @@ CellParams::CellParams(LAMMPS *lmp, const std::string &file_in, const std::strin
                  words[0], entries[words[0]].line);
     entries[words[0]] = {words[1], lineno};
   }
+}
+
+/* ----------------------------------------------------------------------
+   the file as LAMMPS finds potential files, then in $LAMMPS_POTENTIALS (which Debian's LAMMPS
+   29 Sep 2021 does not search); empty if not found
+------------------------------------------------------------------------- */
+
+std::string CellParams::find_file(const std::string &name)
+{
+  std::string path = utils::get_potential_file_path(name);
+  const char *dir = getenv("LAMMPS_POTENTIALS");
+  if (path.empty() && dir) {
+    const std::string candidate = std::string(dir) + "/" + name;
+    if (FILE *fp = fopen(candidate.c_str(), "r")) {
+      fclose(fp);
+      path = candidate;
+    }
+  }
+  return path;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -34,6 +34,7 @@ class CellParams : protected Pointers {
   std::string file, command;
   std::map<std::string, Entry> entries;
 
+  static std::string find_file(const std::string &);
   const Entry &find(const std::string &key) const;
   std::string where(const Entry &e) const;
 };
