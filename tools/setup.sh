@@ -67,7 +67,7 @@ log "LAMMPS source: $LAMMPS_SOURCE_DIR ($version)"
 # --- LAMMPS build (cached, keyed by version and options) -------------------------------------
 host_opts=(-DBUILD_SHARED_LIBS=on -DPKG_PLUGIN=on -DPKG_MOLECULE=on -DPKG_SPH=on -DPKG_OPENMP=on
   -DBUILD_MPI=on -DBUILD_OMP=on -DWITH_PNG=on -DWITH_JPEG=off -DWITH_FFMPEG=off -DWITH_GZIP=on
-  -DLAMMPS_EXCEPTIONS=on -DCMAKE_BUILD_TYPE=Release -DBUILD_TOOLS=off -DBUILD_DOC=off)
+  -DLAMMPS_EXCEPTIONS=off -DCMAKE_BUILD_TYPE=Release -DBUILD_TOOLS=off -DBUILD_DOC=off)
 if [ -z "${LAMMPS_BUILD_DIR:-}" ]; then
   key=$(printf '%s %s %s' "$LAMMPS_SOURCE_DIR" "$version" "${host_opts[*]}" | sha1sum | cut -c1-10)
   LAMMPS_BUILD_DIR=$cache/lammps-$version-$key
