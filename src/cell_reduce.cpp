@@ -1,0 +1,285 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+------------------------------------------------------------------------- */
+
+#include "cell_reduce.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+
+// |u x w|
+static double cross_norm(const double *u, const double *w)
+{
+  const double cx = u[1] * w[2] - u[2] * w[1];
+  const double cy = u[2] * w[0] - u[0] * w[2];
+  const double cz = u[0] * w[1] - u[1] * w[0];
+  return sqrt(cx * cx + cy * cy + cz * cz);
+}
+
+/* ---------------------------------------------------------------------- */
+
+CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, int fluid,
+                       int wall) :
+    Pointers(lmp),
+    command(command_in), group_name(group->names[igroup]), groupbit(group->bitmask[igroup]),
+    fluidtype(fluid), walltype(wall), irho(-1), ipressure(-1), ixref(-1)
+{
+  for (int type : {fluid, wall})
+    if (type < 1 || type > atom->ntypes)
+      error->all(FLERR, "{}: atom type {} is out of range 1 to {}", command, type, atom->ntypes);
+  if (fluid == wall)
+    error->all(FLERR, "{}: fluid and wall atom types must differ (both {})", command, fluid);
+  if (!atom->molecule_flag)
+    error->all(FLERR, "{}: needs molecule (cell) IDs: use atom_style angle", command);
+}
+
+/* ----------------------------------------------------------------------
+   the cells: distinct molecule IDs > 0 of the group's atoms on all ranks
+------------------------------------------------------------------------- */
+
+void CellReduce::find_cells()
+{
+  std::vector<tagint> mine;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) mine.push_back(atom->molecule[i]);
+  std::sort(mine.begin(), mine.end());
+  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+
+  const int n = (int) mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  ids.resize(displs.back() + counts.back());
+  MPI_Allgatherv(mine.data(), n, MPI_LMP_TAGINT, ids.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  if (ids.empty())
+    error->all(FLERR, "{}: group {} has no atoms with a molecule (cell) ID > 0", command,
+               group_name);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom fields and each cell's reference point (mean unwrapped wall position)
+------------------------------------------------------------------------- */
+
+void CellReduce::init()
+{
+  if (!atom->rmass)
+    error->all(FLERR,
+               "{}: needs per-atom masses: add 'fix cellatoms all property/atom rmass d2_xref 3 "
+               "d_aref ghost yes' before read_data",
+               command);
+  irho = custom_vector("rho");
+  ipressure = custom_vector("pressure");
+  int flag, cols;
+  ixref = atom->find_custom("xref", flag, cols);
+  if (flag != 1 || cols != 3) ixref = -1;
+
+  const int n = ncell();
+  std::vector<double> sum(4 * n, 0.0), all(4 * n);
+  double xu[3];
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int c =
+        (atom->mask[i] & groupbit) && atom->type[i] == walltype ? index(atom->molecule[i]) : -1;
+    if (c < 0) continue;
+    domain->unmap(atom->x[i], atom->image[i], xu);
+    for (int d = 0; d < 3; d++) sum[4 * c + d] += xu[d];
+    sum[4 * c + 3] += 1.0;
+  }
+  MPI_Allreduce(sum.data(), all.data(), 4 * n, MPI_DOUBLE, MPI_SUM, world);
+  ref.assign(3 * n, 0.0);
+  for (int c = 0; c < n; c++)
+    if (all[4 * c + 3] > 0.0)
+      for (int d = 0; d < 3; d++) ref[3 * c + d] = all[4 * c + d] / all[4 * c + 3];
+}
+
+/* ---------------------------------------------------------------------- */
+
+int CellReduce::custom_vector(const char *name) const
+{
+  int flag, cols;
+  const int index = atom->find_custom(name, flag, cols);
+  if (index < 0 || flag != 1 || cols != 0)
+    error->all(FLERR,
+               "{}: needs the per-atom SPH field '{}' (written by pair cell/sph): add 'fix cellsph "
+               "all property/atom d_rho d_pressure ghost yes' before read_data",
+               command, name);
+  return index;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int CellReduce::index(tagint molecule) const
+{
+  auto it = std::lower_bound(ids.begin(), ids.end(), molecule);
+  return (it != ids.end() && *it == molecule) ? (int) (it - ids.begin()) : -1;
+}
+
+/* ----------------------------------------------------------------------
+   sum each cell's columns over owned atoms, then one MPI_Allreduce.
+   Each triangle (angle a b c, b the middle atom) is counted once, by the owner of b: angles are
+   stored with b for newton_bond on and off. Vertices are unwrapped around b, relative to the
+   cell's reference point. bond_gt0[type] = G t0 of each bond type, or nullptr for no bond sums.
+------------------------------------------------------------------------- */
+
+void CellReduce::reduce(const double *bond_gt0)
+{
+  const int n = ncell();
+  local.assign(NCOLUMN * n, 0.0);
+  total.resize(NCOLUMN * n);
+  cellof.assign(atom->nlocal, -1);
+
+  double **x = atom->x;
+  const double *rmass = atom->rmass;
+  const double *rho = atom->dvector[irho];
+  const double *pressure = atom->dvector[ipressure];
+  double **xref = ixref >= 0 ? atom->darray[ixref] : nullptr;
+  const tagint *tag = atom->tag;
+  const tagint *molecule = atom->molecule;
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  const int newton_bond = force->newton_bond;
+
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const int c = index(molecule[i]);
+    cellof[i] = c;
+    if (c < 0) continue;
+    double *s = &local[NCOLUMN * c];
+
+    if (type[i] == fluidtype) {
+      if (!(rho[i] > 0.0)) {
+        s[BADRHO] += 1.0;
+        continue;
+      }
+      const double vol = rmass[i] / rho[i];
+      s[MASS] += rmass[i];
+      s[FLUIDVOL] += vol;
+      s[PRESSUREVOL] += pressure[i] * vol;
+      s[NFLUID] += 1.0;
+      continue;
+    }
+    if (type[i] != walltype) continue;
+
+    double b[3];
+    domain->unmap(x[i], atom->image[i], b);
+    for (int d = 0; d < 3; d++) b[d] -= ref[3 * c + d];
+    s[NWALL] += 1.0;
+    s[WX] += b[0];
+    s[WY] += b[1];
+    s[WZ] += b[2];
+    s[WXX] += b[0] * b[0];
+    s[WYY] += b[1] * b[1];
+    s[WZZ] += b[2] * b[2];
+    s[WXY] += b[0] * b[1];
+    s[WXZ] += b[0] * b[2];
+    s[WYZ] += b[1] * b[2];
+
+    for (int m = 0; atom->num_angle && m < atom->num_angle[i]; m++) {
+      if (atom->angle_atom2[i][m] != tag[i] || atom->angle_type[i][m] <= 0) continue;
+      int ia = atom->map(atom->angle_atom1[i][m]);
+      int ic = atom->map(atom->angle_atom3[i][m]);
+      if (ia < 0 || ic < 0)
+        error->one(FLERR, "{}: atoms of wall triangle {} {} {} missing on rank {}", command,
+                   atom->angle_atom1[i][m], tag[i], atom->angle_atom3[i][m], comm->me);
+      ia = domain->closest_image(i, ia);
+      ic = domain->closest_image(i, ic);
+      double a[3], cc[3], ab[3], ac[3];
+      for (int d = 0; d < 3; d++) {
+        a[d] = b[d] + x[ia][d] - x[i][d];
+        cc[d] = b[d] + x[ic][d] - x[i][d];
+        ab[d] = b[d] - a[d];
+        ac[d] = cc[d] - a[d];
+      }
+      // 6 V = sum a . (b x c) over outward triangles (divergence theorem, model-notes.md 4.2)
+      s[VOLUME6] += a[0] * (b[1] * cc[2] - b[2] * cc[1]) + a[1] * (b[2] * cc[0] - b[0] * cc[2]) +
+          a[2] * (b[0] * cc[1] - b[1] * cc[0]);
+      // 2 A = sum |(b - a) x (c - a)|
+      s[AREA2] += cross_norm(ab, ac);
+      s[NTRI] += 1.0;
+      if (xref) {
+        double u[3] = {xref[ia][0] - xref[i][0], xref[ia][1] - xref[i][1],
+                       xref[ia][2] - xref[i][2]};
+        double w[3] = {xref[ic][0] - xref[i][0], xref[ic][1] - xref[i][1],
+                       xref[ic][2] - xref[i][2]};
+        domain->minimum_image(u[0], u[1], u[2]);
+        domain->minimum_image(w[0], w[1], w[2]);
+        // 2 A_ref = |(xref_a - xref_b) x (xref_c - xref_b)|
+        s[REFAREA2] += cross_norm(u, w);
+      }
+    }
+
+    for (int m = 0; bond_gt0 && m < atom->num_bond[i]; m++) {
+      const int btype = atom->bond_type[i][m];
+      const tagint partner = atom->bond_atom[i][m];
+      if (btype <= 0 || (!newton_bond && partner < tag[i])) continue;
+      const int j = atom->map(partner);
+      if (j < 0 || molecule[j] != molecule[i]) continue;
+      s[GT0] += bond_gt0[btype];
+      s[NBOND] += 1.0;
+    }
+  }
+
+  MPI_Allreduce(local.data(), total.data(), NCOLUMN * n, MPI_DOUBLE, MPI_SUM, world);
+
+  for (int c = 0; c < n; c++) {
+    if (get(c, NTRI) == 0.0)
+      error->all(FLERR,
+                 "{}: cell {} has no wall triangles (angles whose middle atom is a type {} atom "
+                 "of group {})",
+                 command, ids[c], walltype, group_name);
+    if (get(c, BADRHO) > 0.0)
+      error->all(FLERR,
+                 "{}: cell {} has {} fluid atoms without a density rho > 0 (is pair cell/sph "
+                 "computing it?)",
+                 command, ids[c], (bigint) get(c, BADRHO));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   turgor P_T = sum P m/rho / sum m/rho (volume-weighted mean, model-notes.md 4.2); 0 without fluid
+------------------------------------------------------------------------- */
+
+double CellReduce::turgor(int c) const
+{
+  return get(c, FLUIDVOL) > 0.0 ? get(c, PRESSUREVOL) / get(c, FLUIDVOL) : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   mean G t0 of the cell's wall bonds, 0 if there are none
+------------------------------------------------------------------------- */
+
+double CellReduce::mean_gt0(int c) const
+{
+  return get(c, NBOND) > 0.0 ? get(c, GT0) / get(c, NBOND) : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   gyration tensor of the wall atoms, xx yy zz xy xz yz: S = <r r> - <r><r>
+------------------------------------------------------------------------- */
+
+void CellReduce::gyration(int c, double s[6]) const
+{
+  const double n = get(c, NWALL);
+  if (n == 0.0) {
+    for (int k = 0; k < 6; k++) s[k] = 0.0;
+    return;
+  }
+  const double mx = get(c, WX) / n, my = get(c, WY) / n, mz = get(c, WZ) / n;
+  s[0] = get(c, WXX) / n - mx * mx;
+  s[1] = get(c, WYY) / n - my * my;
+  s[2] = get(c, WZZ) / n - mz * mz;
+  s[3] = get(c, WXY) / n - mx * my;
+  s[4] = get(c, WXZ) / n - mx * mz;
+  s[5] = get(c, WYZ) / n - my * mz;
+}

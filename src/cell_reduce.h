@@ -1,0 +1,83 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   The one place that computes per-cell sums (design.md section 5), shared by fix cell/turgor and
+   compute cell/props. A cell is a molecule ID > 0; its fluid and wall atoms are told apart by type.
+   Each reduce() sums over owned atoms and wall triangles and does one MPI_Allreduce, so cells may
+   straddle ranks and periodic boundaries.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CELL_REDUCE_H
+#define LMP_CELL_REDUCE_H
+
+#include "pointers.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class CellReduce : protected Pointers {
+ public:
+  // per-cell sums; wall positions are relative to the cell's reference point
+  enum Column {
+    MASS,           // fluid mass sum m
+    FLUIDVOL,       // fluid volume sum m/rho
+    PRESSUREVOL,    // sum P m/rho
+    NFLUID,         // fluid atoms
+    BADRHO,         // fluid atoms without a positive density
+    VOLUME6,        // 6 V: sum over wall triangles of a . (b x c)
+    AREA2,          // 2 A: sum of |(b - a) x (c - a)|
+    REFAREA2,       // 2 A of the triangles at the reference positions xref (0 without xref)
+    NTRI,           // wall triangles
+    NWALL,          // wall atoms
+    WX,             // sum of wall positions x, y, z
+    WY,
+    WZ,
+    WXX,    // sum of wall position products xx, yy, zz, xy, xz, yz
+    WYY,
+    WZZ,
+    WXY,
+    WXZ,
+    WYZ,
+    GT0,      // sum of G t0 over the wall bonds inside the cell (only with bond weights)
+    NBOND,    // those bonds
+    NCOLUMN
+  };
+
+  CellReduce(class LAMMPS *, const std::string &command, int igroup, int fluidtype, int walltype);
+
+  void find_cells();
+  void init();
+  void reduce(const double *bond_gt0 = nullptr);
+
+  int ncell() const { return (int) ids.size(); }
+  tagint id(int c) const { return ids[c]; }
+  double get(int c, Column k) const { return total[c * NCOLUMN + k]; }
+  // cell index of each owned atom at the last reduce(), -1 if it belongs to no cell of the group
+  const std::vector<int> &cell_of_atom() const { return cellof; }
+
+  double mass(int c) const { return get(c, MASS); }
+  double volume(int c) const { return get(c, VOLUME6) / 6.0; }
+  double area(int c) const { return 0.5 * get(c, AREA2); }
+  double ref_area(int c) const { return 0.5 * get(c, REFAREA2); }
+  double fluid_volume(int c) const { return get(c, FLUIDVOL); }
+  double turgor(int c) const;
+  double mean_gt0(int c) const;
+  void gyration(int c, double s[6]) const;
+
+ private:
+  std::string command, group_name;
+  int groupbit, fluidtype, walltype;
+  int irho, ipressure, ixref;
+  std::vector<tagint> ids;    // cell (molecule) IDs, ascending
+  std::vector<double> ref;    // reference point of each cell (unwrapped), 3 per cell
+  std::vector<double> local, total;
+  std::vector<int> cellof;
+
+  int index(tagint molecule) const;
+  int custom_vector(const char *name) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,51 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   compute cell/props: one row per cell of mass, geometry, turgor and shape (design.md section 1)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_COMPUTE_CELL_PROPS_H
+#define LMP_COMPUTE_CELL_PROPS_H
+
+#include "compute.h"
+
+#include <memory>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class CellReduce;
+class FixCellTurgor;
+
+class ComputeCellProps : public Compute {
+ public:
+  ComputeCellProps(class LAMMPS *, int, char **);
+  ~ComputeCellProps() override;
+  void init() override;
+  void compute_array() override;
+
+  // columns of the global array
+  enum {
+    ID,
+    MASS,
+    VOLUME,
+    AREA,
+    TURGOR,
+    OSMOTIC,
+    PSI,
+    DIAMETER,
+    LENGTH1,
+    LENGTH2,
+    LENGTH3,
+    ELONGATION,
+    FLUIDVOL,
+    NCOLUMN
+  };
+
+ private:
+  std::unique_ptr<CellReduce> cells;
+  std::vector<FixCellTurgor *> turgor;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,364 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   fix cell/turgor: every N steps each cell (molecule ID) gains or loses water at the rate
+   dM/dt = rho_w L_P A (psi_ext - (P_T - pi)), integrated with an exponential Euler step in the
+   cell's pressure response so that it is stable for any L_P, and spread over the cell's fluid.
+------------------------------------------------------------------------- */
+
+#include "fix_cell_turgor.h"
+
+#include "atom.h"
+#include "bond.h"
+#include "cell_compat.h"
+#include "cell_params.h"
+#include "cell_reduce.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "math_const.h"
+#include "pair.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using MathConst::MY_PI;
+
+static const int NVALUES = 4;    // restart values per cell: ID, mass0, pi0, warned
+
+/* ---------------------------------------------------------------------- */
+
+FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), psi(0.0), rhow(1000.0), accel(1.0), bulk(0.0),
+    kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2),
+    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0)
+{
+  if (narg < 4)
+    error->all(FLERR,
+               "Illegal fix cell/turgor command: expected 'fix ID group cell/turgor N keyword "
+               "value ...'");
+  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
+  if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
+
+  bool lp_set = false, pi0_set = false;
+  for (int iarg = 4; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "Fix cell/turgor: missing value after '{}'", key);
+    const char *value = arg[iarg + 1];
+    if (key == "LP") {
+      lp = utils::numeric(FLERR, value, false, lmp);
+      lp_set = true;
+    } else if (key == "pi0") {
+      pi0 = utils::numeric(FLERR, value, false, lmp);
+      pi0_set = true;
+    } else if (key == "psi") {
+      psi = utils::numeric(FLERR, value, false, lmp);
+    } else if (key == "rhow") {
+      rhow = utils::numeric(FLERR, value, false, lmp);
+      if (rhow <= 0.0)
+        error->all(FLERR, "Fix cell/turgor: water density rhow = {} must be > 0", rhow);
+    } else if (key == "accel") {
+      accel = utils::numeric(FLERR, value, false, lmp);
+      if (accel <= 0.0) error->all(FLERR, "Fix cell/turgor: accel = {} must be > 0", accel);
+    } else if (key == "bulk") {
+      bulk = utils::numeric(FLERR, value, false, lmp);
+      if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
+    } else if (key == "osmotic") {
+      if (strcmp(value, "fixed") == 0)
+        osmotic_law = FIXED;
+      else if (strcmp(value, "vanthoff") == 0)
+        osmotic_law = VANTHOFF;
+      else
+        error->all(FLERR, "Fix cell/turgor: unknown osmotic law '{}' (expected fixed or vanthoff)",
+                   value);
+    } else if (key == "limit") {
+      if (strcmp(value, "error") == 0)
+        limit = LIMIT_ERROR;
+      else if (strcmp(value, "warn") == 0)
+        limit = LIMIT_WARN;
+      else
+        error->all(FLERR, "Fix cell/turgor: unknown limit action '{}' (expected error or warn)",
+                   value);
+      limit_set = 1;
+    } else if (key == "file") {
+      CellParams params(lmp, value, "Fix cell/turgor");
+      lp = params.nonnegative("turgor_LP");
+      pi0 = params.nonnegative("turgor_pi0");
+      lp_set = pi0_set = true;
+    } else if (key == "fluid") {
+      fluidtype = utils::inumeric(FLERR, value, false, lmp);
+    } else if (key == "wall") {
+      walltype = utils::inumeric(FLERR, value, false, lmp);
+    } else {
+      error->all(FLERR, "Fix cell/turgor: unknown keyword '{}'", key);
+    }
+  }
+  if (!lp_set) error->all(FLERR, "Fix cell/turgor: wall permeability not set: give 'LP value'");
+  if (lp < 0.0) error->all(FLERR, "Fix cell/turgor: wall permeability LP = {} must be >= 0", lp);
+  if (!pi0_set) error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
+  if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
+
+  cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
+
+  vector_flag = 1;
+  size_vector = 5;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  comm_forward = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixCellTurgor::~FixCellTurgor() = default;
+
+/* ---------------------------------------------------------------------- */
+
+int FixCellTurgor::setmask()
+{
+  return END_OF_STEP;
+}
+
+/* ----------------------------------------------------------------------
+   cells of the group, per-cell state for new cells, fluid bulk modulus, wall G t0 per bond type
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::init()
+{
+  cells->find_cells();
+  cells->init();
+  for (int c = 0; c < cells->ncell(); c++) state.emplace(cells->id(c), CellState{0.0, pi0, 0});
+  kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
+
+  gt0.clear();
+  int dim;
+  const double *shear = force->bond ? (double *) force->bond->extract("G", dim) : nullptr;
+  const double *thickness = force->bond ? (double *) force->bond->extract("t0", dim) : nullptr;
+  if (shear && thickness)
+    for (int t = 0; t <= atom->nbondtypes; t++)
+      gt0.push_back(t > 0 ? shear[t] * thickness[t] : 0.0);
+  else if (limit_set && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix cell/turgor: no limit-point check: the bond style does not provide the "
+                   "wall's G and t0 (bond_style cell/neohookean does)");
+}
+
+/* ----------------------------------------------------------------------
+   K of the fluid's equation of state, from pair cell/sph
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::pair_bulk_modulus()
+{
+  Pair *pair = force->pair_match("cell/sph", 1);
+  int dim = -1;
+  const double *k = pair ? (double *) pair->extract("K", dim) : nullptr;
+  if (!k || dim != 0)
+    error->all(FLERR,
+               "Fix cell/turgor: the fluid's bulk modulus is unknown: give 'bulk K' or use "
+               "pair_style cell/sph");
+  return *k;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTurgor::setup(int)
+{
+  evaluate(false);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTurgor::end_of_step()
+{
+  evaluate(true);
+}
+
+/* ----------------------------------------------------------------------
+   per-cell turgor, osmotic pressure and water flux; with transfer, advance each cell's fluid mass
+   over h = accel N dt of physical time and spread it over the cell's fluid atoms
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::evaluate(bool transfer)
+{
+  cells->reduce(gt0.empty() ? nullptr : gt0.data());
+  const int n = cells->ncell();
+  const double h = accel * nevery * update->dt;
+  std::vector<double> scale(n, 0.0);
+  double moved = 0.0;
+  max_imbalance = max_stiffness = 0.0;
+
+  for (int c = 0; c < n; c++) {
+    const tagint id = cells->id(c);
+    const double mass = cells->mass(c);
+    const double volume = cells->volume(c);
+    const double area = cells->area(c);
+    const double turgor = cells->turgor(c);
+    if (cells->get(c, CellReduce::NFLUID) == 0.0)
+      error->all(FLERR, "Fix cell/turgor: cell {} has no fluid atoms of type {} in group {}", id,
+                 fluidtype, group->names[igroup]);
+    if (!std::isfinite(turgor) || !std::isfinite(mass) || !(mass > 0.0) || !std::isfinite(volume) ||
+        !(volume > 0.0))
+      error->all(FLERR,
+                 "Fix cell/turgor: cell {} is not physical at step {}: turgor P_T = {} Pa, volume "
+                 "V = {} m^3, fluid mass M = {} kg",
+                 id, update->ntimestep, turgor, volume, mass);
+
+    CellState &s = state[id];
+    if (s.mass0 == 0.0) s.mass0 = mass;
+    double pi;
+    osmotic(id, mass, pi);
+    // psi_ext - psi_cell with psi_cell = P_T - pi (design.md section 1)
+    const double drive = psi - (turgor - pi);
+    const double conductance = rhow * lp * area;
+    // k = rho_w L_P A d(P_T - pi)/dM, dP_T/dM = (K + P_T)/M (summation density), dpi/dM = -pi/M
+    const double relax = conductance *
+        std::max(0.0, (kfluid + turgor) / mass + (osmotic_law == VANTHOFF ? pi / mass : 0.0));
+    const double z = h * relax;
+    max_imbalance = std::max(max_imbalance, fabs(drive));
+    max_stiffness = std::max(max_stiffness, z);
+    check_limit(c, s, turgor, pi);
+    if (!transfer) continue;
+
+    // exponential Euler: dM = h rho_w L_P A drive (1 - exp(-z)) / z, z = h k (exact when linear)
+    const double dmass = h * conductance * drive * (z > 0.0 ? -expm1(-z) / z : 1.0);
+    if (!(mass + dmass > 0.0))
+      error->all(FLERR,
+                 "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = {} "
+                 "kg, change {} kg (psi_ext = {} Pa, turgor P_T = {} Pa, pi = {} Pa)",
+                 id, update->ntimestep, mass, dmass, psi, turgor, pi);
+    scale[c] = dmass / mass;
+    moved += dmass;
+  }
+  if (!transfer) return;
+
+  // m_i <- m_i (1 + dM/M) on the cell's fluid atoms, then to the ghosts
+  double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const std::vector<int> &cellof = cells->cell_of_atom();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (cellof[i] >= 0 && type[i] == fluidtype) rmass[i] *= 1.0 + scale[cellof[i]];
+  CellCompat::forward_comm(comm, this);
+
+  water_moved += moved;
+  physical_time += h;
+}
+
+/* ----------------------------------------------------------------------
+   stop or warn when the cell's thin Neo-Hookean wall cannot hold the turgor (model-notes.md 6)
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi)
+{
+  const double gt = cells->mean_gt0(c);
+  const double area0 = cells->ref_area(c);
+  if (gt0.empty() || gt <= 0.0 || area0 <= 0.0) return;
+
+  const double r0 = sqrt(area0 / (4.0 * MY_PI));
+  // P_max = (2 G t0 / R0) (6/7) 7^(-1/6) = 0.6197 (2 G t0 / R0) at stretch 7^(1/6)
+  const double pmax = 2.0 * gt / r0 * (6.0 / 7.0) * pow(7.0, -1.0 / 6.0);
+  const double stretch = sqrt(cells->area(c) / area0);
+  const double demand = pi + psi;
+
+  std::string why;
+  if (osmotic_law == FIXED && demand > pmax)
+    why = "its demanded turgor pi + psi_ext exceeds the wall's limit-point pressure";
+  else if (stretch > pow(7.0, 1.0 / 6.0) && turgor < demand)
+    why = fmt::format("its wall passed the limit-point stretch 7^(1/6) = 1.383 (stretch {:.4g}) "
+                      "with turgor below pi + psi_ext",
+                      stretch);
+  else
+    return;
+
+  const std::string message = fmt::format(
+      "Fix cell/turgor: cell {} cannot hold its turgor: {}: turgor P_T = {:.6g} Pa, pi = {:.6g} "
+      "Pa, psi_ext = {:.6g} Pa, limit-point pressure P_max = 0.6197 (2 G t0 / R0) = {:.6g} Pa "
+      "(G t0 = {:.4g} N/m, R0 = {:.4g} m)",
+      cells->id(c), why, turgor, pi, psi, pmax, gt, r0);
+  if (limit == LIMIT_ERROR) error->all(FLERR, message);
+  if (!s.warned && comm->me == 0) error->warning(FLERR, message);
+  s.warned = 1;
+}
+
+/* ----------------------------------------------------------------------
+   osmotic pressure pi of a cell at fluid mass: fixed pi0, or van 't Hoff pi = pi0 M0 / M;
+   false if this fix does not act on the cell
+------------------------------------------------------------------------- */
+
+bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
+{
+  auto it = state.find(cell);
+  if (it == state.end()) return false;
+  const CellState &s = it->second;
+  pi = (osmotic_law == VANTHOFF && s.mass0 > 0.0) ? s.pi0 * s.mass0 / mass : s.pi0;
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   1 water moved into the cells (kg), 2 physical time (s), 3 cells, 4 max |psi_ext - psi_cell| (Pa),
+   5 max h k: an explicit update would be unstable above 2
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::compute_vector(int n)
+{
+  const double values[] = {water_moved, physical_time, (double) cells->ncell(), max_imbalance,
+                           max_stiffness};
+  return values[n];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTurgor::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  std::vector<double> list = {(double) state.size(), physical_time, water_moved};
+  for (const auto &kv : state) {
+    list.push_back((double) kv.first);
+    list.push_back(kv.second.mass0);
+    list.push_back(kv.second.pi0);
+    list.push_back(kv.second.warned);
+  }
+  const int size = (int) (list.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list.data(), sizeof(double), list.size(), fp);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTurgor::restart(char *buf)
+{
+  const double *list = (double *) buf;
+  const int n = (int) list[0];
+  physical_time = list[1];
+  water_moved = list[2];
+  state.clear();
+  bool other_pi0 = false;
+  for (int k = 0; k < n; k++) {
+    const double *v = &list[3 + NVALUES * k];
+    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3]};
+    other_pi0 = other_pi0 || v[2] != pi0;
+  }
+  if (other_pi0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix cell/turgor: cells continue with the osmotic pressure pi0 stored in the "
+                   "restart file, not pi0 = {}",
+                   pi0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixCellTurgor::pack_forward_comm(int n, int *list, double *buf, int, int *)
+{
+  for (int k = 0; k < n; k++) buf[k] = atom->rmass[list[k]];
+  return n;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) atom->rmass[first + k] = buf[k];
+}

@@ -1,0 +1,63 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   fix cell/turgor: water transfer through the cell wall driven by turgor, osmotic pressure and the
+   external water potential (design.md sections 1 and 2)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_CELL_TURGOR_H
+#define LMP_FIX_CELL_TURGOR_H
+
+#include "fix.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class CellReduce;
+
+class FixCellTurgor : public Fix {
+ public:
+  FixCellTurgor(class LAMMPS *, int, char **);
+  ~FixCellTurgor() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void end_of_step() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+
+  bool osmotic(tagint cell, double mass, double &pi) const;
+
+ protected:
+  enum Osmotic { FIXED = 0, VANTHOFF = 1 };
+  enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
+  struct CellState {
+    double mass0;    // fluid mass when the fix first saw the cell (kg)
+    double pi0;      // osmotic pressure at mass0 (Pa)
+    int warned;      // 1 once the limit-point warning was printed
+  };
+
+  double lp, pi0, psi, rhow, accel;
+  double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
+  double kfluid;    // K in use
+  int osmotic_law, limit, limit_set, fluidtype, walltype;
+  std::unique_ptr<CellReduce> cells;
+  std::map<tagint, CellState> state;
+  std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
+
+  double physical_time, water_moved, max_imbalance, max_stiffness;
+
+  void evaluate(bool transfer);
+  void check_limit(int c, CellState &s, double turgor, double pi);
+  double pair_bulk_modulus();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
