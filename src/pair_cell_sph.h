@@ -1,0 +1,79 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   pair_style cell/sph: the cell fluid, summation density with per-atom mass, pressure force F^p
+   and Morris viscous force F^v (design.md section 1)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_CELL_SPH_H
+#define LMP_PAIR_CELL_SPH_H
+
+#include "cell_kernel.h"
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairCellSPH : public Pair {
+ public:
+  PairCellSPH(class LAMMPS *);
+  ~PairCellSPH() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+  enum Eos { LINEAR = 0, TAIT = 1 };
+
+ protected:
+  int kernel, eos;
+  double cut_global;    // neighbour cutoff from pair_style; 0 = the kernel support
+
+  double **rho0, **bulk, **mu, **h;    // pair_coeff values per type pair
+
+  struct PairConst {
+    double cutsq;               // (kernel support)^2; 0 if the pair is not computed
+    CellKernel::Scale scale;    // kernel constants at this pair's h
+    double mu2;                 // mu_i + mu_j
+  };
+  PairConst **pc;    // per type pair, from init_one()
+
+  double *wself;      // W(0) at the h of pair_coeff I I: self term of the density, per type
+  double *invrho0;    // 1 / rho0 per type (equation of state of pair_coeff I I)
+  double *eosk;       // K (linear) or K/7 (Tait) per type
+  int *fluid;         // 1 if the type takes part in cell/sph
+  int viscous;        // 1 if any computed pair has mu > 0
+
+  int irho, ipressure;    // custom per-atom vectors rho and pressure
+  double *prho2;          // P / rho^2 of owned and ghost fluid atoms
+  double *rhoinv;         // 1 / rho of owned and ghost fluid atoms
+  int nmax;
+
+  // pairs inside the kernel support, found by the density pass and reused by the force pass
+  int *pairfirst;    // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
+  int *pairj;        // neighbour index j
+  double *pairdw;    // m_i m_j (1/r) dW/dr
+  double *pairmu;    // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
+  int maxfirst, maxpairs;
+
+  void allocate();
+  template <int KERNEL, int VISCOUS> void sum_density();
+  template <int VISCOUS, int EVFLAG> void sum_forces();
+  void apply_eos();
+  void grow_pairs(int);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
