@@ -34,9 +34,9 @@ static const char *const EOS_NAMES[] = {"linear", "tait"};
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), rho0(nullptr),
     bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr), invrho0(nullptr),
-    eosk(nullptr), fluid(nullptr), viscous(0), irho(-1), ipressure(-1), prho2(nullptr),
-    rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairmu(nullptr),
-    maxfirst(0), maxpairs(0)
+    eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1),
+    prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
+    pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   writedata = 1;
@@ -645,6 +645,27 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
       (pressure[i] / (rho[i] * rho[i]) + pressure[j] / (rho[j] * rho[j])) *
       CellKernel::dWr(kernel, p.scale, sqrt(rsq));
   return 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   "rho0" or "K" of the fluid (dim 0) when every type with a pair_coeff I I has the same value,
+   e.g. for fix cell/turgor; nullptr if they differ
+------------------------------------------------------------------------- */
+
+void *PairCellSPH::extract(const char *str, int &dim)
+{
+  dim = 0;
+  const int which = strcmp(str, "rho0") == 0 ? 0 : strcmp(str, "K") == 0 ? 1 : -1;
+  if (which < 0 || !allocated) return nullptr;
+  double **values = which == 0 ? rho0 : bulk;
+  bool found = false;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    if (!setflag[i][i]) continue;
+    if (found && values[i][i] != shared[which]) return nullptr;
+    shared[which] = values[i][i];
+    found = true;
+  }
+  return found ? (void *) &shared[which] : nullptr;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -28,6 +28,7 @@ class PairCellSPH : public Pair {
   void write_data(FILE *) override;
   void write_data_all(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
+  void *extract(const char *, int &) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
@@ -49,11 +50,12 @@ class PairCellSPH : public Pair {
   };
   PairConst **pc;    // per type pair, from init_one()
 
-  double *wself;      // W(0) at the h of pair_coeff I I: self term of the density, per type
-  double *invrho0;    // 1 / rho0 per type (equation of state of pair_coeff I I)
-  double *eosk;       // K (linear) or K/7 (Tait) per type
-  int *fluid;         // 1 if the type takes part in cell/sph
-  int viscous;        // 1 if any computed pair has mu > 0
+  double *wself;       // W(0) at the h of pair_coeff I I: self term of the density, per type
+  double *invrho0;     // 1 / rho0 per type (equation of state of pair_coeff I I)
+  double *eosk;        // K (linear) or K/7 (Tait) per type
+  int *fluid;          // 1 if the type takes part in cell/sph
+  int viscous;         // 1 if any computed pair has mu > 0
+  double shared[2];    // rho0 and K shared by all fluid types, for extract()
 
   int irho, ipressure;    // custom per-atom vectors rho and pressure
   double *prho2;          // P / rho^2 of owned and ghost fluid atoms
