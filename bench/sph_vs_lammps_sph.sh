@@ -43,6 +43,6 @@ for ranks in 1 2; do
     c = np * s / (tc * r); l = np * s / (tl * r)
     printf "%-6d %22.3e %22.3e %8.2f\n", r, c, l, c / l }'
 done
-echo "neighbours per particle inside the support: $(grep -h "^Ave neighs/atom" "$work"/cellsph.1.1.log |
+echo "neighbour-list entries per particle (support + skin): $(grep -h "^Ave neighs/atom" "$work"/cellsph.1.1.log |
   tail -1 | awk '{print $NF}') (cell/sph half list), $(grep -h "^Ave neighs/atom" "$work"/lammps.1.1.log |
   tail -1 | awk '{print $NF}') (LAMMPS, first of its lists)"
