@@ -11,6 +11,7 @@
 #include "version.h"
 
 #include "bond_cell_neohookean.h"
+#include "fix_cell_pressure.h"
 #include "compute_cell_props.h"
 #include "fix_cell_turgor.h"
 #include "pair_cell_sph.h"
@@ -44,6 +45,8 @@ struct StyleEntry {
 const StyleEntry STYLES[] = {
     {"bond", "cell/neohookean", "Neo-Hookean cell-wall bond with damping",
      &create_v1<BondCellNeoHookean>, nullptr},
+    {"fix", "cell/pressure", "imposed turgor pressure on closed cell walls", nullptr,
+     &create_v2<FixCellPressure>},
     {"fix", "cell/turgor", "water transfer through the cell wall (turgor, osmosis, permeability)",
      nullptr, &create_v2<FixCellTurgor>},
     {"compute", "cell/props", "per-cell mass, volume, area, turgor, osmotic pressure and shape",
