@@ -55,13 +55,16 @@ namespace CellCompat {
     if (flags & REQ_OCCASIONAL) rq->occasional = 1;
     return rq;
   }
+  // request() may reallocate the requests array: index it only after the call
   inline NeighRequest *request_list(Neighbor *neighbor, Pair *style, int instance, int flags)
   {
-    return configure(neighbor->requests[neighbor->request(style, instance)], flags);
+    const int irq = neighbor->request(style, instance);
+    return configure(neighbor->requests[irq], flags);
   }
   inline NeighRequest *request_list(Neighbor *neighbor, Fix *style, int instance, int flags)
   {
-    NeighRequest *rq = neighbor->requests[neighbor->request(style, instance)];
+    const int irq = neighbor->request(style, instance);
+    NeighRequest *rq = neighbor->requests[irq];
     rq->pair = 0;
     rq->fix = 1;
     return configure(rq, flags);
