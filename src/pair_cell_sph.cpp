@@ -20,6 +20,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -213,6 +214,26 @@ void PairCellSPH::grow_pairs(int n)
    the equation-of-state energy m_i e(rho_i), e' = P/rho^2, whose gradient is the pressure force
 ------------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   stop a run whose density left (0, 2 rho0] (a weakly compressible fluid never gets there unless
+   the run went unstable), saying where and the likely cause
+------------------------------------------------------------------------- */
+
+void PairCellSPH::unstable(int i) const
+{
+  const int t = atom->type[i];
+  const double c = sqrt(bulk[t][t] * invrho0[t]);
+  const double rho = atom->dvector[irho][i];
+  error->one(FLERR,
+             "Pair cell/sph: atom {} (cell {}) at ({:.4g}, {:.4g}, {:.4g}) has density {:.4g} = "
+             "{:.3g} rho0 on step {}, outside (0, 2 rho0]: the run went unstable; the acoustic "
+             "time step limit is 0.25 h / c = {:.3g} s (c = sqrt(K / rho0) = {:.4g} m/s)",
+             atom->tag[i], atom->molecule ? atom->molecule[i] : 0, atom->x[i][0], atom->x[i][1],
+             atom->x[i][2], rho, rho * invrho0[t], update->ntimestep, 0.25 * h[t][t] / c, c);
+}
+
+/* ---------------------------------------------------------------------- */
+
 void PairCellSPH::apply_eos()
 {
   const double *rho = atom->dvector[irho];
@@ -238,6 +259,7 @@ void PairCellSPH::apply_eos()
       pressure[i] = eosk[t] * (x - 1.0);
       if (eflag_either) e = eosk[t] * invrho0[t] * (log(x) + 1.0 / x - 1.0);
     }
+    if (!(x > 0.0 && x <= 2.0) || !std::isfinite(pressure[i])) unstable(i);
     rhoinv[i] = 1.0 / rho[i];
     prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i];
     if (eflag_global) eng_vdwl += rmass[i] * e;

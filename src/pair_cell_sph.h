@@ -70,6 +70,7 @@ class PairCellSPH : public Pair {
   int maxfirst, maxpairs;
 
   void allocate();
+  void unstable(int) const;
   template <int KERNEL, int VISCOUS> void sum_density();
   template <int VISCOUS, int EVFLAG> void sum_forces();
   void apply_eos();
