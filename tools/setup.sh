@@ -54,7 +54,9 @@ if [ -z "${LAMMPS_SOURCE_DIR:-}" ]; then
       "${sudo_cmd[@]}" apt-get update -qq >"$cache/apt.log" 2>&1
     fi
     log "fetching the Debian LAMMPS source package into $srcroot"
-    (cd "$srcroot" && apt-get source -qq lammps >/dev/null)
+    # the release this machine runs (bookworm on Debian 12), not whatever newer deb-src is listed
+    codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+    (cd "$srcroot" && apt-get source -qq "lammps${codename:+/$codename}" >/dev/null)
     LAMMPS_SOURCE_DIR=$(find "$srcroot" -maxdepth 1 -type d -name 'lammps-*' | head -n 1)
   fi
 fi
