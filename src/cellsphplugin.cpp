@@ -11,8 +11,8 @@
 #include "version.h"
 
 #include "bond_cell_neohookean.h"
-#include "fix_cell_pressure.h"
 #include "compute_cell_props.h"
+#include "fix_cell_pressure.h"
 #include "fix_cell_turgor.h"
 #include "pair_cell_sph.h"
 #include "pair_cell_wall.h"
@@ -21,6 +21,11 @@
 #include <string>
 
 using namespace LAMMPS_NS;
+
+// the LAMMPS version this plugin was compiled for (overridden only to test the check below)
+#ifndef CELLSPH_ABI_VERSION
+#define CELLSPH_ABI_VERSION LMP_VERSION_NUM
+#endif
 
 namespace {
 
@@ -60,8 +65,8 @@ const StyleEntry STYLES[] = {
 std::string abi_mismatch(void *lmp)
 {
   const int running = lammps_version(lmp);
-  if (running != LMP_VERSION_NUM)
-    return "it was compiled for LAMMPS version " + std::to_string(LMP_VERSION_NUM) +
+  if (running != CELLSPH_ABI_VERSION)
+    return "it was compiled for LAMMPS version " + std::to_string(CELLSPH_ABI_VERSION) +
         " but this LAMMPS is version " + std::to_string(running);
   const struct {
     const char *name;

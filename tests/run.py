@@ -10,7 +10,7 @@
                                     lines runs only these)
 A normal run passes if LAMMPS exits 0, prints no ERROR and no FAIL line, and prints a PASS line
 (from tests/check.lmp) or the test has compare/same lines. Needs LMP (the lmp to run) in the
-environment; CELLGEN and MPIEXEC are passed on when set.
+environment; CELLGEN and WRONGPLUGIN become -var cellgen/wrongplugin, MPIEXEC is used when set.
 """
 import os
 import re
@@ -91,8 +91,9 @@ def main():
     shutil.rmtree(base, ignore_errors=True)
     spec = directives(inp)
     common = [("testdir", tests)] + [(v[0], " ".join(v[1:])) for v in spec["var"]]
-    if os.environ.get("CELLGEN"):
-        common.append(("cellgen", os.environ["CELLGEN"]))
+    for name in ("cellgen", "wrongplugin"):
+        if os.environ.get(name.upper()):
+            common.append((name, os.environ[name.upper()]))
     failures = []
 
     for k, (message, assigns) in enumerate(spec["error"]):
