@@ -10,6 +10,7 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "pair_cell_wall.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +32,8 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
                        int wall) :
     Pointers(lmp),
     command(command_in), group_name(group->names[igroup]), groupbit(group->bitmask[igroup]),
-    fluidtype(fluid), walltype(wall), irho(-1), ipressure(-1), ixref(-1)
+    fluidtype(fluid), walltype(wall), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
+    wallpair(nullptr)
 {
   for (int type : {fluid, wall})
     if (type < 1 || type > atom->ntypes)
@@ -40,6 +42,18 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
     error->all(FLERR, "{}: fluid and wall atom types must differ (both {})", command, fluid);
   if (!atom->molecule_flag)
     error->all(FLERR, "{}: needs molecule (cell) IDs: use atom_style angle", command);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellReduce::set_turgor(const std::string &value)
+{
+  if (value == "wall")
+    measure = TURGOR_WALL;
+  else if (value == "sph")
+    measure = TURGOR_SPH;
+  else
+    error->all(FLERR, "{}: unknown turgor measure '{}' (expected wall or sph)", command, value);
 }
 
 /* ----------------------------------------------------------------------
@@ -84,6 +98,16 @@ void CellReduce::init()
   int flag, cols;
   ixref = atom->find_custom("xref", flag, cols);
   if (flag != 1 || cols != 3) ixref = -1;
+
+  // the wall load comes from pair cell/wall (also as a hybrid sub-style)
+  wallpair = dynamic_cast<PairCellWall *>(force->pair_match("cell/wall", 0));
+  if (wallpair)
+    wallpair->request_wall_load(fluidtype, walltype, command);
+  else if (measure == TURGOR_WALL)
+    error->all(FLERR,
+               "{}: turgor wall (the default) needs the wall load from pair_style cell/wall; add "
+               "it or use 'turgor sph'",
+               command);
 
   const int n = ncell();
   std::vector<double> sum(4 * n, 0.0), all(4 * n);
@@ -149,6 +173,7 @@ void CellReduce::reduce(const double *bond_gt0)
   const int *type = atom->type;
   const int *mask = atom->mask;
   const int newton_bond = force->newton_bond;
+  double **load = wallpair ? wallpair->wall_load() : nullptr;
 
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -184,6 +209,12 @@ void CellReduce::reduce(const double *bond_gt0)
     s[WXY] += b[0] * b[1];
     s[WXZ] += b[0] * b[2];
     s[WYZ] += b[1] * b[2];
+    if (load) {
+      s[LOADVIR] += b[0] * load[i][0] + b[1] * load[i][1] + b[2] * load[i][2];
+      s[LOADX] += load[i][0];
+      s[LOADY] += load[i][1];
+      s[LOADZ] += load[i][2];
+    }
 
     for (int m = 0; atom->num_angle && m < atom->num_angle[i]; m++) {
       if (atom->angle_atom2[i][m] != tag[i] || atom->angle_type[i][m] <= 0) continue;
@@ -247,12 +278,27 @@ void CellReduce::reduce(const double *bond_gt0)
 }
 
 /* ----------------------------------------------------------------------
-   turgor P_T = sum P m/rho / sum m/rho (volume-weighted mean, model-notes.md 4.2); 0 without fluid
+   SPH turgor = sum P m/rho / sum m/rho (volume-weighted mean, model-notes.md 4.2); 0 without fluid
 ------------------------------------------------------------------------- */
 
-double CellReduce::turgor(int c) const
+double CellReduce::sph_turgor(int c) const
 {
   return get(c, FLUIDVOL) > 0.0 ? get(c, PRESSUREVOL) / get(c, FLUIDVOL) : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   wall turgor = sum (x - xc) . F / 3 V over the wall atoms, F the force of the cell's fluid on them,
+   xc their centroid: a uniform pressure P on a closed surface gives the integral of x . P n dA =
+   3 P V (divergence theorem)
+------------------------------------------------------------------------- */
+
+double CellReduce::wall_turgor(int c) const
+{
+  const double n = get(c, NWALL);
+  if (get(c, VOLUME6) == 0.0 || n == 0.0) return 0.0;
+  const double shift =
+      (get(c, WX) * get(c, LOADX) + get(c, WY) * get(c, LOADY) + get(c, WZ) * get(c, LOADZ)) / n;
+  return 2.0 * (get(c, LOADVIR) - shift) / get(c, VOLUME6);
 }
 
 /* ----------------------------------------------------------------------

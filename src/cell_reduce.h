@@ -39,13 +39,25 @@ class CellReduce : protected Pointers {
     WXY,
     WXZ,
     WYZ,
-    GT0,      // sum of G t0 over the wall bonds inside the cell (only with bond weights)
-    NBOND,    // those bonds
+    GT0,        // sum of G t0 over the wall bonds inside the cell (only with bond weights)
+    NBOND,      // those bonds
+    LOADVIR,    // sum of (x - ref) . F over wall atoms, F = force on them from the cell's fluid
+    LOADX,      // sum of F, x y z
+    LOADY,
+    LOADZ,
     NCOLUMN
+  };
+
+  // which pressure is the cell's turgor P_T
+  enum Turgor {
+    TURGOR_WALL,    // the load of the fluid on the wall (pair cell/wall), default
+    TURGOR_SPH      // the volume-weighted mean SPH pressure of the fluid
   };
 
   CellReduce(class LAMMPS *, const std::string &command, int igroup, int fluidtype, int walltype);
 
+  // the value of a 'turgor wall|sph' keyword
+  void set_turgor(const std::string &value);
   void find_cells();
   void init();
   void reduce(const double *bond_gt0 = nullptr);
@@ -61,7 +73,10 @@ class CellReduce : protected Pointers {
   double area(int c) const { return 0.5 * get(c, AREA2); }
   double ref_area(int c) const { return 0.5 * get(c, REFAREA2); }
   double fluid_volume(int c) const { return get(c, FLUIDVOL); }
-  double turgor(int c) const;
+  double turgor(int c) const { return measure == TURGOR_WALL ? wall_turgor(c) : sph_turgor(c); }
+  double sph_turgor(int c) const;
+  double wall_turgor(int c) const;
+  bool has_wall_load() const { return wallpair != nullptr; }
   double mean_gt0(int c) const;
   void gyration(int c, double s[6]) const;
 
@@ -69,8 +84,10 @@ class CellReduce : protected Pointers {
   std::string command, group_name;
   int groupbit, fluidtype, walltype;
   int irho, ipressure, ixref;
-  std::vector<tagint> ids;    // cell (molecule) IDs, ascending
-  std::vector<double> ref;    // reference point of each cell (unwrapped), 3 per cell
+  int measure;
+  class PairCellWall *wallpair;    // tallies the wall load, nullptr if none
+  std::vector<tagint> ids;         // cell (molecule) IDs, ascending
+  std::vector<double> ref;         // reference point of each cell (unwrapped), 3 per cell
   std::vector<double> local, total;
   std::vector<int> cellof;
 

@@ -28,6 +28,7 @@ using MathConst::MY_PI;
 ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
 {
   int fluidtype = 1, walltype = 2;
+  std::string measure = "wall";
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Compute cell/props: missing value after '{}'", arg[iarg]);
@@ -35,11 +36,14 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) : Compute(
       fluidtype = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
     else if (strcmp(arg[iarg], "wall") == 0)
       walltype = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+    else if (strcmp(arg[iarg], "turgor") == 0)
+      measure = arg[iarg + 1];
     else
-      error->all(FLERR, "Compute cell/props: unknown keyword '{}' (expected fluid or wall)",
+      error->all(FLERR, "Compute cell/props: unknown keyword '{}' (expected fluid, wall or turgor)",
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/props", igroup, fluidtype, walltype);
+  cells->set_turgor(measure);
   cells->find_cells();
 
   array_flag = 1;
@@ -106,5 +110,7 @@ void ComputeCellProps::compute_array()
     for (int k = 0; k < 3; k++) row[LENGTH1 + k] = sqrt(std::max(0.0, eig[2 - k]));
     row[ELONGATION] = row[LENGTH3] > 0.0 ? row[LENGTH1] / row[LENGTH3] : 0.0;
     row[FLUIDVOL] = cells->fluid_volume(c);
+    row[SPHTURGOR] = cells->sph_turgor(c);
+    row[WALLTURGOR] = cells->has_wall_load() ? cells->wall_turgor(c) : 0.0;
   }
 }

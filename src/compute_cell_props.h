@@ -38,6 +38,8 @@ class ComputeCellProps : public Compute {
     LENGTH3,
     ELONGATION,
     FLUIDVOL,
+    SPHTURGOR,
+    WALLTURGOR,
     NCOLUMN
   };
 

@@ -45,6 +45,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
 
   bool lp_set = false, pi0_set = false;
+  std::string measure = "wall";
   for (int iarg = 4; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Fix cell/turgor: missing value after '{}'", key);
@@ -89,6 +90,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       lp = params.nonnegative("turgor_LP");
       pi0 = params.nonnegative("turgor_pi0");
       lp_set = pi0_set = true;
+    } else if (key == "turgor") {
+      measure = value;
     } else if (key == "fluid") {
       fluidtype = utils::inumeric(FLERR, value, false, lmp);
     } else if (key == "wall") {
@@ -103,6 +106,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
+  cells->set_turgor(measure);
 
   vector_flag = 1;
   size_vector = 5;

@@ -57,15 +57,19 @@ static inline double ratio_power(double s, double p, int half)
 
 /* ---------------------------------------------------------------------- */
 
-PairCellWall::PairCellWall(LAMMPS *lmp) : Pair(lmp), cut_global(0.0), coeffs(nullptr)
+PairCellWall::PairCellWall(LAMMPS *lmp) :
+    Pair(lmp), cut_global(0.0), coeffs(nullptr), load_fluid(0), load_wall(0), nmax_load(0),
+    load(nullptr)
 {
   writedata = 1;
+  comm_reverse = 3;
 }
 
 /* ---------------------------------------------------------------------- */
 
 PairCellWall::~PairCellWall()
 {
+  memory->destroy(load);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -79,9 +83,33 @@ void PairCellWall::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
+  if (load_wall) {
+    if (atom->nmax > nmax_load) {
+      nmax_load = atom->nmax;
+      memory->destroy(load);
+      memory->create(load, nmax_load, 3, "pair:load");
+    }
+    const int nall = atom->nlocal + (force->newton_pair ? atom->nghost : 0);
+    if (nall > 0) memset(&load[0][0], 0, sizeof(double) * 3 * nall);
+    eval<1>(eflag);
+    if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+  } else {
+    eval<0>(eflag);
+  }
+
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   the pair loop; with LOAD, also the force of each fluid atom on the wall atoms of its own cell
+------------------------------------------------------------------------- */
+
+template <int LOAD> void PairCellWall::eval(int eflag)
+{
   double **x = atom->x;
   double **f = atom->f;
   const int *type = atom->type;
+  const tagint *molecule = atom->molecule;
   const int nlocal = atom->nlocal;
   const double *special_lj = force->special_lj;
   const int newton_pair = force->newton_pair;
@@ -127,11 +155,71 @@ void PairCellWall::compute(int eflag, int vflag)
         f[j][1] -= dely * fpair;
         f[j][2] -= delz * fpair;
       }
+      if (LOAD && molecule[i] == molecule[j]) {
+        if (itype == load_wall && jtype == load_fluid) {
+          load[i][0] += delx * fpair;
+          load[i][1] += dely * fpair;
+          load[i][2] += delz * fpair;
+        } else if (itype == load_fluid && jtype == load_wall && (newton_pair || j < nlocal)) {
+          load[j][0] -= delx * fpair;
+          load[j][1] -= dely * fpair;
+          load[j][2] -= delz * fpair;
+        }
+      }
       if (evflag) ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, delx, dely, delz);
     }
   }
+}
 
-  if (vflag_fdotr) virial_fdotr_compute();
+/* ----------------------------------------------------------------------
+   tally the fluid-to-wall force of the cell's own fluid on wall atoms from the next force
+   evaluation on; one pair of types at a time
+------------------------------------------------------------------------- */
+
+void PairCellWall::request_wall_load(int fluidtype, int walltype, const std::string &who)
+{
+  if (load_wall && (load_fluid != fluidtype || load_wall != walltype))
+    error->all(FLERR,
+               "{}: pair cell/wall already tallies the wall load for fluid type {} and wall type "
+               "{}, not {} and {}",
+               who, load_fluid, load_wall, fluidtype, walltype);
+  if (!atom->molecule_flag)
+    error->all(FLERR, "{}: the wall load needs molecule (cell) IDs: use atom_style angle", who);
+  load_fluid = fluidtype;
+  load_wall = walltype;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairCellWall::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    buf[m++] = load[i][0];
+    buf[m++] = load[i][1];
+    buf[m++] = load[i][2];
+  }
+  return m;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int j = list[k];
+    load[j][0] += buf[m++];
+    load[j][1] += buf[m++];
+    load[j][2] += buf[m++];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairCellWall::memory_usage()
+{
+  return Pair::memory_usage() + 3.0 * nmax_load * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
@@ -358,12 +446,14 @@ void PairCellWall::check(const Coeff &c, const std::string &from)
 }
 
 /* ----------------------------------------------------------------------
-   request a half list; warn if contact would act between bonded wall particles
+   request a half list, forget wall-load requests (their styles renew them in their init); warn if
+   contact would act between bonded wall particles
 ------------------------------------------------------------------------- */
 
 void PairCellWall::init_style()
 {
   CellCompat::request_list(neighbor, this, 0, CellCompat::REQ_DEFAULT);
+  load_fluid = load_wall = 0;
 
   bool contact = false;
   for (int i = 1; i <= atom->ntypes; i++)

@@ -29,6 +29,14 @@ class PairCellWall : public Pair {
   void write_data(FILE *) override;
   void write_data_all(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+  // per-atom force on the wall atoms from the fluid atoms of the same cell (molecule), tallied on
+  // every force evaluation after a request; the request lasts until the next init
+  void request_wall_load(int fluidtype, int walltype, const std::string &who);
+  double **wall_load() const { return load; }
 
   enum Term { REPULSION = 1 << 0, ADHESION = 1 << 1, CONTACT = 1 << 2 };
 
@@ -45,8 +53,12 @@ class PairCellWall : public Pair {
  protected:
   double cut_global;
   Coeff **coeffs;
+  int load_fluid, load_wall;    // atom types of a wall-load request, 0 = none
+  int nmax_load;
+  double **load;
 
   void allocate();
+  template <int LOAD> void eval(int eflag);
   double evaluate(const Coeff &, double, int, double &) const;
   std::string describe(const Coeff &) const;
   void read_file(Coeff &, const char *, const char *);
