@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Neo-Hookean inflation of a sealed cell (bench/cell_inflation.lmp) at several resolutions: the
-# turgor P_T of the SPH fluid against the thin-membrane law P(lam) = (2 G t0/R0)(1/lam - 1/lam^7).
+# turgor P_T (the fluid's load on the wall) against the thin-membrane law
+# P(lam) = (2 G t0/R0)(1/lam - 1/lam^7) at the area stretch lam = sqrt(A/A0), with the Laplace
+# pressure 2T/R of the wall tension and the mean SPH pressure beside it.
 #
 #   bash bench/cell_inflation.sh [s ...]       resolutions (default: 1.5 1 0.75; s = 1 is the
 #                                              seed's, 0.5 takes about an hour on one core)
@@ -41,18 +43,18 @@ table() {
     file == 2 && /^# s=/ { for (i = 2; i <= NF; i++) { split($i, kv, "="); hdr[kv[1]] = kv[2] } }
     file == 2 && !/^#/ {
       m++
-      leak = ($13 > 0 || $14 > 0) ? sprintf("yes (%d out, %d lost)", $13, $14) : "no"
-      printf "| %s | %s | %s | %.2f | %.4f | %.4f | %.1f | %.1f | %+.1f %% | %+.1f %% | %.2f | %s | %.0f |\n",
-        label, hdr["Nwall"], hdr["Nfluid"], $1, $2, $3, $4/1e3, $5/1e3, 100*$7, 100*($8/$5-1), $11/$5,
-        leak, ts[m]
+      leak = ($14 > 0 || $15 > 0) ? sprintf("yes (%d out, %d lost)", $14, $15) : "no"
+      printf "| %s | %s | %s | %.2f | %.4f | %.4f | %.1f | %.1f | %+.2f %% | %+.2f %% | %+.1f %% | %.2f | %s | %.0f |\n",
+        label, hdr["Nwall"], hdr["Nfluid"], $1, $2, $3, $5/1e3, $6/1e3, 100*$7, 100*$9, 100*($11/$6-1),
+        $12/$6, leak, ts[m]
     }
     END { if (prep) printf "|   (%s: preparation to f = 1 took %.0f s) |\n", label, prep }
   ' "$dir/log.lammps" "$dir/stages.dat"
 }
 
 header() {
-  echo "| $1 | wall | fluid | f | lam (radius) | lam (volume) | P_T (kPa) | P_law(lam) (kPa) | P_T/P_law - 1 | 2T/R / P_law - 1 | P_interior / P_law | leak | compute s |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
+  echo "| $1 | wall | fluid | f | lam (area) | lam (volume) | P_T (kPa) | P_law(lam) (kPa) | P_T/P_law - 1 | P_T/(2T/R) - 1 | P_SPH/P_law - 1 | P_SPH,interior / P_law | leak | compute s |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
 }
 
 if [ "${1:-}" = table ]; then

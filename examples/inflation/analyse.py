@@ -9,7 +9,8 @@ GT0 = 18e6 * 1e-6       # G t0 of potentials/apple.cellsph, N/m
 
 
 def series(tag):
-    """columns of mass_TAG.dat: t, M/M0, P_T, pi, lambda_area, lambda_volume, |psi imbalance|"""
+    """columns of mass_TAG.dat: t, M/M0, P_T, pi, lambda_area, lambda_volume, |psi imbalance|, P_L,
+    P_SPH"""
     rows = []
     with open(f"mass_{tag}.dat") as f:
         for line in f:
@@ -19,10 +20,10 @@ def series(tag):
 
 
 def final(tag):
-    """final_TAG.txt: final LP t M/M0 P_T pi lambda_area lambda_volume hk P_L"""
+    """final_TAG.txt: final LP t M/M0 P_T pi lambda_area lambda_volume hk P_L P_SPH"""
     with open(f"final_{tag}.txt") as f:
         v = f.read().split()
-    keys = ["LP", "t", "m", "P", "pi", "lam", "lamv", "hk", "PL"]
+    keys = ["LP", "t", "m", "P", "pi", "lam", "lamv", "hk", "PL", "PS"]
     return dict(zip(keys, map(float, v[1:])))
 
 
@@ -58,22 +59,24 @@ def fit(xs, ys):
 
 def summary():
     lines = ["# Fig. 5 runs (apple set, pi = 200 kPa fixed, pure water, dt = 2e-8 s, N = 10, accel 1)",
-             "# P_T: turgor (mean SPH pressure, what fix cell/turgor balances against pi); P_L: the turgor "
-             "the wall carries (bond virial)",
+             "# P_T: turgor (the fluid's load on the wall, what fix cell/turgor balances against pi); "
+             "P_L: the turgor the wall carries (bond virial); P_SPH: mean SPH pressure",
              "# t50, t90: time to 50 and 90 % of the run's own uptake; overshoot: max M / final M - 1; "
              "hk: stiffness of the transfer step (an explicit update is unstable above 2)",
-             "# L_P      t_end[s]   M/M0      P_T[kPa]  P_L[kPa]  lam_area  lam_vol   t50[s]     t90[s]     "
-             "overshoot  hk"]
+             "# L_P      t_end[s]   M/M0      P_T[kPa]  P_L[kPa]  P_SPH[kPa] lam_area  lam_vol   t50[s]     "
+             "t90[s]     overshoot  hk"]
     for lp in ["2.5e-4", "2.5e-5", "2.5e-6", "2.5e-7"]:
         tag = f"LP{lp}"
         rows, f = series(tag), final(tag)
         over = max(r[1] for r in rows) / f["m"] - 1
-        lines.append(f"{lp:8s} {f['t']:10.3e} {f['m']:9.5f} {f['P'] / 1e3:9.2f} {f['PL'] / 1e3:9.2f} {f['lam']:9.5f} "
+        lines.append(f"{lp:8s} {f['t']:10.3e} {f['m']:9.5f} {f['P'] / 1e3:9.2f} {f['PL'] / 1e3:9.2f} {f['PS'] / 1e3:10.2f} {f['lam']:9.5f} "
                      f"{f['lamv']:9.5f} {t_frac(rows, f['m'], 0.5):10.3e} "
                      f"{t_frac(rows, f['m'], 0.9):10.3e} {over:9.1e} {f['hk']:8.3g}")
     ms = [final(f"LP{lp}")["m"] for lp in ["2.5e-4", "2.5e-5", "2.5e-6", "2.5e-7"]]
-    lines.append(f"# spread of the steady M/M0 over L_P: (max - min)/mean = "
-                 f"{(max(ms) - min(ms)) / (sum(ms) / 4):.2e}")
+    lams = [final(f"LP{lp}")["lam"] for lp in ["2.5e-4", "2.5e-5", "2.5e-6", "2.5e-7"]]
+    lines.append(f"# spread over L_P, (max - min)/mean: steady M/M0 "
+                 f"{(max(ms) - min(ms)) / (sum(ms) / 4):.2e}, area stretch "
+                 f"{(max(lams) - min(lams)) / (sum(lams) / 4):.2e}")
     _, _, a0 = fresh("LP2.5e-6")
     r0 = math.sqrt(a0 / (4 * math.pi))
     lo, hi = 1.0, 7 ** (1 / 6)
