@@ -14,7 +14,7 @@ repeats=${2:-3}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
 cd "$out"
-"$build/tools/cellgen/cellgen" --gap 7.5e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
+"$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
 
 echo "| MPI ranks | particles | steps | loop time (s), best of $repeats | particle-steps/s | per core |"
 echo "|---:|---:|---:|---:|---:|---:|"

@@ -21,7 +21,7 @@ rm -f series_*.dat final_*.txt runs.txt
 
 echo "# inflation_speed: $(date -u), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg)"
 for nf in 500 1624 5000; do
-  "$build/tools/cellgen/cellgen" --nfluid $nf --gap 7.5e-6 --wall-mass 1e-12 --out cell$nf.data \
+  "$build/tools/cellgen/cellgen" --nfluid $nf --gap 11e-6 --wall-mass 1e-12 --out cell$nf.data \
     >cellgen$nf.log
   dx=$(sed -n 's/.*DX = \([0-9.e+-]*\) m.*/\1/p' cellgen$nf.log)
   count=$(sed -n 's/^particles: \([0-9]*\) fluid.*/\1/p' cellgen$nf.log)

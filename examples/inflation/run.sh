@@ -16,7 +16,7 @@ start=$(date +%s)
 
 # the seed's resolution (R0 = 75 um, 1092 wall and 1647 fluid particles), the wall-fluid gap at the
 # repulsion range r0 (doc/pair_cell_wall.md), wall particles as heavy as fluid particles
-"$build/tools/cellgen/cellgen" --gap 7.5e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
+"$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
 
 run() {    # run TAG [-var NAME VALUE ...]: one LAMMPS run on one core, screen output in TAG.log
   local tag=$1

@@ -11,8 +11,8 @@ mkdir -p "$out"
 cd "$out"
 rm -f cut_*.png sealed_cell.dat profile.txt
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# seed resolution: R0 = 75 um, 1092 wall and 1647 fluid particles, wall-fluid gap = r0 = 7.5 um
-"$build/tools/cellgen/cellgen" --gap 7.5e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
+# seed resolution: R0 = 75 um, 1092 wall and 1647 fluid particles, wall-fluid gap = r0 = 11 um
+"$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
 if [ "$np" = 1 ]; then run=("$build/bin/lmp"); else run=(mpirun -np "$np" "$build/bin/lmp"); fi
 "${run[@]}" -in "$here/in.sealed_cell" -log log.lammps >screen.log
 last=$(ls cut_*.png | sort -t_ -k2 -n | tail -n 1)
@@ -28,21 +28,24 @@ set xlabel 'time (ms)'
 set ylabel 'pressure (kPa)'
 set yrange [-50:450]
 set key top right
-plot 'sealed_cell.dat' using ($1*1e3):($2/1e3) with lines lw 2 title 'turgor P_T (compute cell/props)', \
-     '' using ($1*1e3):($5/1e3) with lines lw 2 title 'membrane law P(lam), lam = mean wall radius / R0', \
+plot 'sealed_cell.dat' using ($1*1e3):($2/1e3) with lines lw 2 title 'turgor P_T (load of the fluid on the wall)', \
+     '' using ($1*1e3):($5/1e3) with lines lw 2 title 'membrane law P(lam), lam = sqrt(A / A0)', \
      '' using ($1*1e3):($6/1e3) with lines dt 2 lw 2 title 'Laplace 2T/R of the wall tension', \
-     '' using ($1*1e3):($7/1e3) with lines lw 1 title 'interior pressure (deeper than 2h)'
+     '' using ($1*1e3):($9/1e3) with lines lw 1 title 'mean SPH pressure', \
+     '' using ($1*1e3):($7/1e3) with lines lw 1 title 'interior SPH pressure (deeper than 2h)'
 set ylabel 'relative to P_law(lam) (%)'
-set yrange [-40:20]
+set yrange [-50:40]
 set key bottom right
 plot 'sealed_cell.dat' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($2/$5-1)) with lines lw 2 title 'P_T / P_law - 1', \
      '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($6/$5-1)) with lines dt 2 lw 2 title '2T/R / P_law - 1 (the wall)', \
+     '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($9/$5-1)) with lines lw 1 title 'P_SPH / P_law - 1', \
      '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($7/$5-1)) with lines lw 1 title 'P_interior / P_law - 1', \
      0 with lines lc rgb 'black' notitle
 set yrange [*:*]
 set ylabel 'stretch lam'
-plot 'sealed_cell.dat' using ($1*1e3):3 with lines lw 2 title 'mean wall radius / R0', \
-     '' using ($1*1e3):4 with lines dt 2 lw 2 title '(V / V0)^(1/3), triangulated volume'
+plot 'sealed_cell.dat' using ($1*1e3):3 with lines lw 2 title 'sqrt(A / A0), wall area', \
+     '' using ($1*1e3):4 with lines dt 2 lw 2 title '(V / V0)^(1/3), triangulated volume', \
+     '' using ($1*1e3):10 with lines dt 3 lw 2 title 'mean wall radius / R0'
 unset multiplot
 set output 'profile.png'
 set xlabel 'distance from the cell centre (um)'
