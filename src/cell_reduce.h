@@ -77,6 +77,7 @@ class CellReduce : protected Pointers {
   double sph_turgor(int c) const;
   double wall_turgor(int c) const;
   bool has_wall_load() const { return wallpair != nullptr; }
+  bool wall_measure() const { return measure == TURGOR_WALL; }
   double mean_gt0(int c) const;
   void gyration(int c, double s[6]) const;
 

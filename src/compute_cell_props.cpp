@@ -90,11 +90,14 @@ void ComputeCellProps::compute_array()
     row[MASS] = cells->mass(c);
     row[VOLUME] = cells->volume(c);
     row[AREA] = cells->area(c);
+    // P_T and pi from the first fix cell/turgor acting on the cell, else this compute's measure and 0
     row[TURGOR] = cells->turgor(c);
-    // pi from the first fix cell/turgor acting on the cell, else 0
     row[OSMOTIC] = 0.0;
     for (auto *fix : turgor)
-      if (fix->osmotic(cells->id(c), row[MASS], row[OSMOTIC])) break;
+      if (fix->osmotic(cells->id(c), row[MASS], row[OSMOTIC])) {
+        fix->turgor(cells->id(c), row[TURGOR]);
+        break;
+      }
     // psi_cell = P_T - pi
     row[PSI] = row[TURGOR] - row[OSMOTIC];
     // D_eq = (6 V / pi)^(1/3)

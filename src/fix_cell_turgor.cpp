@@ -28,12 +28,12 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-static const int NVALUES = 4;    // restart values per cell: ID, mass0, pi0, warned
+static const int NVALUES = 6;    // restart values per cell: ID, mass0, pi0, warned, offset, P_T
 
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), psi(0.0), rhow(1000.0), accel(1.0), bulk(0.0),
+    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), psi(0.0), rhow(1000.0), accel(1.0), tau(0.0), bulk(0.0),
     kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2),
     physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0)
 {
@@ -92,6 +92,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       lp_set = pi0_set = true;
     } else if (key == "turgor") {
       measure = value;
+    } else if (key == "tau") {
+      tau = utils::numeric(FLERR, value, false, lmp);
+      if (tau <= 0.0) error->all(FLERR, "Fix cell/turgor: offset time tau = {} must be > 0", tau);
     } else if (key == "fluid") {
       fluidtype = utils::inumeric(FLERR, value, false, lmp);
     } else if (key == "wall") {
@@ -135,7 +138,8 @@ void FixCellTurgor::init()
 {
   cells->find_cells();
   cells->init();
-  for (int c = 0; c < cells->ncell(); c++) state.emplace(cells->id(c), CellState{0.0, pi0, 0});
+  for (int c = 0; c < cells->ncell(); c++)
+    state.emplace(cells->id(c), CellState{0.0, pi0, 0, 0.0, 0.0});
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -200,7 +204,8 @@ void FixCellTurgor::evaluate(bool transfer)
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
     const double area = cells->area(c);
-    const double turgor = cells->turgor(c);
+    CellState &s = state[id];
+    const double turgor = flux_turgor(c, s, transfer);
     if (cells->get(c, CellReduce::NFLUID) == 0.0)
       error->all(FLERR, "Fix cell/turgor: cell {} has no fluid atoms of type {} in group {}", id,
                  fluidtype, group->names[igroup]);
@@ -211,16 +216,17 @@ void FixCellTurgor::evaluate(bool transfer)
                  "V = {} m^3, fluid mass M = {} kg",
                  id, update->ntimestep, turgor, volume, mass);
 
-    CellState &s = state[id];
     if (s.mass0 == 0.0) s.mass0 = mass;
     double pi;
     osmotic(id, mass, pi);
     // psi_ext - psi_cell with psi_cell = P_T - pi (design.md section 1)
     const double drive = psi - (turgor - pi);
     const double conductance = rhow * lp * area;
-    // k = rho_w L_P A d(P_T - pi)/dM, dP_T/dM = (K + P_T)/M (summation density), dpi/dM = -pi/M
+    // k = rho_w L_P A d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), dpi/dM = -pi/M
     const double relax = conductance *
-        std::max(0.0, (kfluid + turgor) / mass + (osmotic_law == VANTHOFF ? pi / mass : 0.0));
+        std::max(0.0,
+                 (kfluid + cells->sph_turgor(c)) / mass +
+                     (osmotic_law == VANTHOFF ? pi / mass : 0.0));
     const double z = h * relax;
     max_imbalance = std::max(max_imbalance, fabs(drive));
     max_stiffness = std::max(max_stiffness, z);
@@ -249,6 +255,27 @@ void FixCellTurgor::evaluate(bool transfer)
 
   water_moved += moved;
   physical_time += h;
+}
+
+/* ----------------------------------------------------------------------
+   the turgor that drives the flux. turgor sph: the mean SPH pressure. turgor wall: the mean SPH
+   pressure minus its running mean offset from the wall load, so that the steady state is the wall
+   load P_W = pi + psi_ext while each transfer sees the fluid's instantaneous, smooth response (the
+   wall load alone carries the wall's ringing into the mass at large h k); the mean advances on
+   transfer steps only, so a run split in two continues as one
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
+{
+  const double psph = cells->sph_turgor(c);
+  s.turgor = psph;
+  if (!cells->wall_measure()) return psph;
+  const double gap = psph - cells->wall_turgor(c);
+  const double window = tau > 0.0 ? tau : 100.0 * nevery * update->dt;
+  // offset <- offset + (N dt / tau) (P_SPH - P_W - offset), from 0: an exponential running mean
+  if (advance) s.offset += std::min(1.0, nevery * update->dt / window) * (gap - s.offset);
+  s.turgor = psph - s.offset;
+  return s.turgor;
 }
 
 /* ----------------------------------------------------------------------
@@ -288,6 +315,19 @@ void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi)
 }
 
 /* ----------------------------------------------------------------------
+   turgor P_T of a cell at the last evaluation (what drives its flux); false if this fix does not
+   act on the cell
+------------------------------------------------------------------------- */
+
+bool FixCellTurgor::turgor(tagint cell, double &pt) const
+{
+  auto it = state.find(cell);
+  if (it == state.end()) return false;
+  pt = it->second.turgor;
+  return true;
+}
+
+/* ----------------------------------------------------------------------
    osmotic pressure pi of a cell at fluid mass: fixed pi0, or van 't Hoff pi = pi0 M0 / M;
    false if this fix does not act on the cell
 ------------------------------------------------------------------------- */
@@ -324,6 +364,8 @@ void FixCellTurgor::write_restart(FILE *fp)
     list.push_back(kv.second.mass0);
     list.push_back(kv.second.pi0);
     list.push_back(kv.second.warned);
+    list.push_back(kv.second.offset);
+    list.push_back(kv.second.turgor);
   }
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -342,7 +384,7 @@ void FixCellTurgor::restart(char *buf)
   bool other_pi0 = false;
   for (int k = 0; k < n; k++) {
     const double *v = &list[3 + NVALUES * k];
-    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3]};
+    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], v[5]};
     other_pi0 = other_pi0 || v[2] != pi0;
   }
   if (other_pi0 && comm->me == 0)

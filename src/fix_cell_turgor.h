@@ -32,17 +32,21 @@ class FixCellTurgor : public Fix {
   void unpack_forward_comm(int, int, double *) override;
 
   bool osmotic(tagint cell, double mass, double &pi) const;
+  bool turgor(tagint cell, double &pt) const;
 
  protected:
   enum Osmotic { FIXED = 0, VANTHOFF = 1 };
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
   struct CellState {
-    double mass0;    // fluid mass when the fix first saw the cell (kg)
-    double pi0;      // osmotic pressure at mass0 (Pa)
-    int warned;      // 1 once the limit-point warning was printed
+    double mass0;     // fluid mass when the fix first saw the cell (kg)
+    double pi0;       // osmotic pressure at mass0 (Pa)
+    int warned;       // 1 once the limit-point warning was printed
+    double offset;    // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
+    double turgor;    // turgor P_T of the last evaluation (Pa)
   };
 
   double lp, pi0, psi, rhow, accel;
+  double tau;       // MD time of the running mean of the offset (s), 0 = 100 N dt
   double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
   double kfluid;    // K in use
   int osmotic_law, limit, limit_set, fluidtype, walltype;
@@ -54,6 +58,7 @@ class FixCellTurgor : public Fix {
 
   void evaluate(bool transfer);
   void check_limit(int c, CellState &s, double turgor, double pi);
+  double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
 };
 
