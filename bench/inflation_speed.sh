@@ -4,7 +4,8 @@
 # L_P = 2.5e-6 m/(s Pa)) at about 500, 1600 and 5000 fluid particles (h = 1.322 dx), on 2 MPI
 # ranks (wall-fluid f0 raised for the coarse fluid: inflation_speed.lmp). Per resolution: a
 # reference run (time step dt0/2, accel 1, 400 us of physical time) and
-# runs with dt0 = 2e-8 s (h / 12.2 um) and accel 1, 4, 16 that stop once the cell is steady
+# runs with dt0 = 2e-8 s (h / 12.2 um) and accel 1, 4, 16 that stop once the cell is steady (accel
+# only stretches physical time here: L_P = 2.5e-6 is as fast as the mechanics; it is kept to show it)
 # (|pi - P_T| < 200 Pa; at most as many steps as 400 us at accel 1). Prints a table: steady fluid mass M/M0 and its error against the
 # reference of the same resolution and against the finest reference, area stretch against the
 # thin Neo-Hookean membrane at 200 kPa, time to 90 % of the uptake (physical time) and its error,
