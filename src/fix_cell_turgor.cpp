@@ -28,7 +28,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-static const int NVALUES = 6;    // restart values per cell: ID, mass0, pi0, warned, offset, P_T
+static const int NVALUES = 5;    // restart values per cell: ID, mass0, pi0, warned, offset
 
 /* ---------------------------------------------------------------------- */
 
@@ -365,7 +365,6 @@ void FixCellTurgor::write_restart(FILE *fp)
     list.push_back(kv.second.pi0);
     list.push_back(kv.second.warned);
     list.push_back(kv.second.offset);
-    list.push_back(kv.second.turgor);
   }
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -384,7 +383,7 @@ void FixCellTurgor::restart(char *buf)
   bool other_pi0 = false;
   for (int k = 0; k < n; k++) {
     const double *v = &list[3 + NVALUES * k];
-    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], v[5]};
+    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], 0.0};
     other_pi0 = other_pi0 || v[2] != pi0;
   }
   if (other_pi0 && comm->me == 0)

@@ -42,7 +42,7 @@ class FixCellTurgor : public Fix {
     double pi0;       // osmotic pressure at mass0 (Pa)
     int warned;       // 1 once the limit-point warning was printed
     double offset;    // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
-    double turgor;    // turgor P_T of the last evaluation (Pa)
+    double turgor;    // turgor P_T of the last evaluation (Pa), set again by setup()
   };
 
   double lp, pi0, psi, rhow, accel;
