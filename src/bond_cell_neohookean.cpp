@@ -81,7 +81,7 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
     const double l0 = rest_length(i1, i2);
     double fbond = -stretch_force(type, r, l0, bond_area(i1, i2, l0), ebond) / r;
 
-    // F^d = -gamma ((v1 - v2) . e) e: damps stretching, not rigid motion (design.md section 1)
+    // F^d = -gamma ((v1 - v2) . e) e: damps stretching, not rigid motion (doc/model.md §4.3)
     if (gamma[type] > 0.0) {
       const double vr = (v[i1][0] - v[i2][0]) * delx + (v[i1][1] - v[i2][1]) * dely +
           (v[i1][2] - v[i2][2]) * delz;
@@ -105,8 +105,8 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
 /* ----------------------------------------------------------------------
    tension dU/dl of a bond of type at length r, rest length l0, reference area a; energy U into u.
    A bond carries the membrane energy of its area a: U = (G t0 a / 2)(2 lam^2 + lam^-4 - 3), the
-   incompressible Neo-Hookean membrane energy per area under equibiaxial stretch (model-notes.md
-   5.1), so a closed wall under uniform stretch has exactly the tension G t0 (1 - lam^-6).
+   incompressible Neo-Hookean membrane energy per area under equibiaxial stretch (doc/model.md
+   §4.1), so a closed wall under uniform stretch has exactly the tension G t0 (1 - lam^-6).
 ------------------------------------------------------------------------- */
 
 double BondCellNeoHookean::stretch_force(int type, double r, double l0, double a, double &u) const

@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   bond_style cell/neohookean: the cell-wall stiffness F^e and damping F^d (design.md section 1)
+   bond_style cell/neohookean: the cell-wall stiffness F^e and damping F^d (doc/model.md §4)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_BOND_CELL_NEOHOOKEAN_H

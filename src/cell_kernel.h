@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   The SPH smoothing kernels, in one place for density and forces (design.md section 5: the SPH
+   The SPH smoothing kernels, in one place for density and forces (doc/model.md §3.1; the SPH
    package's anti-pattern is a kernel per style). W(r) = sigma_d / h^d f(q) with q = r/h and
    (1/r) dW/dr = sigma_d / h^(d+2) f'(q)/q. The dimension and h enter only through the constants
    of Scale, computed once per type pair; the shapes f(q) and f'(q)/q are templates so that a

@@ -232,7 +232,7 @@ void CellReduce::reduce(const double *bond_gt0)
         ab[d] = b[d] - a[d];
         ac[d] = cc[d] - a[d];
       }
-      // 6 V = sum a . (b x c) over outward triangles (divergence theorem, model-notes.md 4.2)
+      // 6 V = sum a . (b x c) over outward triangles (divergence theorem, doc/model.md §5.2)
       s[VOLUME6] += a[0] * (b[1] * cc[2] - b[2] * cc[1]) + a[1] * (b[2] * cc[0] - b[0] * cc[2]) +
           a[2] * (b[0] * cc[1] - b[1] * cc[0]);
       // 2 A = sum |(b - a) x (c - a)|
@@ -278,7 +278,7 @@ void CellReduce::reduce(const double *bond_gt0)
 }
 
 /* ----------------------------------------------------------------------
-   SPH turgor = sum P m/rho / sum m/rho (volume-weighted mean, model-notes.md 4.2); 0 without fluid
+   SPH turgor = sum P m/rho / sum m/rho (volume-weighted mean, doc/model.md §5.2); 0 without fluid
 ------------------------------------------------------------------------- */
 
 double CellReduce::sph_turgor(int c) const

@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   The one place that computes per-cell sums (design.md section 5), shared by fix cell/turgor and
+   The one place that computes per-cell sums (doc/model.md §5.2), shared by fix cell/turgor and
    compute cell/props. A cell is a molecule ID > 0; its fluid and wall atoms are told apart by type.
    Each reduce() sums over owned atoms and wall triangles and does one MPI_Allreduce, so cells may
    straddle ranks and periodic boundaries.

@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   compute cell/props: one row per cell of mass, geometry, turgor and shape (design.md section 1)
+   compute cell/props: one row per cell of mass, geometry, turgor and shape (doc/model.md §5.2)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_COMPUTE_CELL_PROPS_H

@@ -219,7 +219,7 @@ void FixCellTurgor::evaluate(bool transfer)
     if (s.mass0 == 0.0) s.mass0 = mass;
     double pi;
     osmotic(id, mass, pi);
-    // psi_ext - psi_cell with psi_cell = P_T - pi (design.md section 1)
+    // psi_ext - psi_cell with psi_cell = P_T - pi (doc/model.md §5.1)
     const double drive = psi - (turgor - pi);
     const double conductance = rhow * lp * area;
     // k = rho_w L_P A d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), dpi/dM = -pi/M
@@ -279,7 +279,7 @@ double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
 }
 
 /* ----------------------------------------------------------------------
-   stop or warn when the cell's thin Neo-Hookean wall cannot hold the turgor (model-notes.md 6)
+   stop or warn when the cell's thin Neo-Hookean wall cannot hold the turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
 void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi)

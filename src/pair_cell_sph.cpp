@@ -183,7 +183,7 @@ template <int KERNEL, int VISCOUS> void PairCellSPH::sum_density()
 
       const double r = sqrt(rsq);
       const double mj = rmass[j];
-      // rho_i += m_j W_ij, rho_j += m_i W_ij (model-notes.md 3.2)
+      // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2)
       const double w = CellKernel::W<KERNEL>(p.scale, r);
       rhoi += mj * w;
       if (newton_pair || j < nlocal) rho[j] += mi * w;
@@ -299,7 +299,7 @@ template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
-      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (model-notes.md 3.4)
+      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4)
       const double fpress = -pairdw[k] * (prho2i + prho2[j]);
       double fx = delx * fpress;
       double fy = dely * fpress;
@@ -662,7 +662,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   if (rsq >= p.cutsq) return 0.0;
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
-  // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (model-notes.md 3.4)
+  // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (doc/model.md §3.4)
   fforce = -atom->rmass[i] * atom->rmass[j] *
       (pressure[i] / (rho[i] * rho[i]) + pressure[j] / (rho[j] * rho[j])) *
       CellKernel::dWr(kernel, p.scale, sqrt(rsq));

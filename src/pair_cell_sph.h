@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    pair_style cell/sph: the cell fluid, summation density with per-atom mass, pressure force F^p
-   and Morris viscous force F^v (design.md section 1)
+   and Morris viscous force F^v (doc/model.md §3.1-3.5)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_CELL_SPH_H

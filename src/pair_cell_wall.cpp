@@ -236,7 +236,7 @@ inline double PairCellWall::evaluate(const Coeff &c, double rsq, int eflag, doub
     const double s = c.r0sq / rsq;
     const double a = ratio_power(s, c.p1, c.half1);
     const double b = ratio_power(s, c.p2, c.half2);
-    // F = f0 [(r0/r)^p1 - (r0/r)^p2] / r for r < r0 (model-notes.md 3.6)
+    // F = f0 [(r0/r)^p1 - (r0/r)^p2] / r for r < r0 (doc/model.md §3.6)
     fpair += c.f0 * (a - b) / rsq;
     // U = f0 [((r0/r)^p1 - 1) / p1 - ((r0/r)^p2 - 1) / p2], so U(r0) = 0
     if (eflag) u += c.f0 * ((a - 1.0) / c.p1 - (b - 1.0) / c.p2);
@@ -249,7 +249,7 @@ inline double PairCellWall::evaluate(const Coeff &c, double rsq, int eflag, doub
     } else if (rsq < c.rcsq) {
       const double r = sqrt(rsq);
       const double e = exp(-c.alpha * (r - c.ra));
-      // F = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0, attractive (model-notes.md 3.7)
+      // F = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0, attractive (doc/model.md §3.7)
       fpair += c.two_alpha_d * e * (e - 1.0) / r;
       // U = U_M(r) - U_M(rc), U_M(r) = D [e^-2alpha(r-ra) - 2 e^-alpha(r-ra)]
       if (eflag) u += c.D * e * (e - 2.0) - c.u_rc;
@@ -258,7 +258,7 @@ inline double PairCellWall::evaluate(const Coeff &c, double rsq, int eflag, doub
 
   if ((c.terms & CONTACT) && rsq < c.contactsq) {
     const double s3 = cube(c.sigsq / rsq);
-    // WCA: F = 24 eps [2 (sigma/r)^12 - (sigma/r)^6] / r, r < 2^(1/6) sigma (model-notes.md 5.4)
+    // WCA: F = 24 eps [2 (sigma/r)^12 - (sigma/r)^6] / r, r < 2^(1/6) sigma (doc/model.md §4.4)
     fpair += 24.0 * c.eps * s3 * (2.0 * s3 - 1.0) / rsq;
     // U = 4 eps [(sigma/r)^12 - (sigma/r)^6] + eps, zero at the cutoff
     if (eflag) u += 4.0 * c.eps * s3 * (s3 - 1.0) + c.eps;

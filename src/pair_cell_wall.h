@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    pair_style cell/wall: wall-fluid repulsion F^rw/F^rf, wall-fluid adhesion F^a and non-bonded
-   wall-wall contact (design.md section 1)
+   wall-wall contact (doc/model.md §3.6, 3.7, 4.4)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_CELL_WALL_H
