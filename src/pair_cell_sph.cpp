@@ -305,7 +305,7 @@ template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
       double fy = dely * fpress;
       double fz = delz * fpress;
       if (VISCOUS) {
-        // F^v_i = m_i m_j (mu_i + mu_j) v_ij / (rho_i rho_j) (1/r) dW/dr (Morris 1997; 3.5)
+        // F^v_i = m_i m_j (mu_i + mu_j) v_ij / (rho_i rho_j) (1/r) dW/dr (doc/model.md §3.5)
         const double fvisc = pairmu[k] * rhoinvi * rhoinv[j];
         fx += (vxtmp - v[j][0]) * fvisc;
         fy += (vytmp - v[j][1]) * fvisc;
