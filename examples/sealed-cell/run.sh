@@ -10,7 +10,9 @@ out=$here/out
 mkdir -p "$out"
 cd "$out"
 rm -f cut_*.png sealed_cell.dat profile.txt
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
 # seed resolution: R0 = 75 um, 1092 wall and 1647 fluid particles, wall-fluid gap = r0 = 11 um
 "$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
 if [ "$np" = 1 ]; then run=("$build/bin/lmp"); else run=(mpirun -np "$np" "$build/bin/lmp"); fi
