@@ -8,9 +8,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failed=0
 
-# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL GEODESIC
+# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL GEODESIC RHO0 WALL_MASS
 # FLUID_TOL / VOLUME_TOL are relative; 0 skips the fluid-count / volume-accuracy test.
 # GEODESIC = 1: every cell's wall has exactly 12 particles with 5 bonds and all others 6.
+# Every per-atom mass must equal its documented formula (tools/cellgen/README.md, Masses), with R_k
+# the cell's wall radius: fluid rho0 (4/3 pi R_k^3) / M_k; wall WALL_MASS, or rho0 (4 pi R_k^2 1 um)
+# / N_k when WALL_MASS is 0.
 check_data() {
   awk -v wall_expect="$2" -v fluid_target="$3" -v fluid_tol="$4" -v vol_tol="$5" '
     function fail(msg) { print "  FAIL: " msg; bad++ }
@@ -44,6 +47,7 @@ check_data() {
       n_cell++
       if ($3 " " $4 " " $5 != xs[$1]) fail("CellAtoms xref differs from position of atom " $1)
       if ($2 <= 0) fail("non-positive mass of atom " $1)
+      amass[$1] = $2
       if (nmol_single && abs($2 / tmass[type[$1]] - 1) > 1e-9) fail("per-atom mass != type mass")
     }
     END {
@@ -82,6 +86,14 @@ check_data() {
         if (v6 <= 0) inward++
       }
       if (inward) fail(inward " triangle(s) not outward")
+      for (i in type) {
+        m = mol[i]
+        if (type[i] == 1) expect = rho0 * 4 / 3 * pi * rad[m] ^ 3 / nfl[m]
+        else expect = wall_mass > 0 ? wall_mass : rho0 * 4 * pi * rad[m] ^ 2 * 1e-6 / nv[m]
+        if (abs(amass[i] / expect - 1) > 1e-9) {
+          fail("mass of atom " i " (type " type[i] ") " amass[i] ", formula gives " expect); break
+        }
+      }
       if (geodesic) {
         for (i in type) if (type[i] == 2) { if (deg[i] == 5) n5[mol[i]]++; else if (deg[i] != 6) other++ }
         if (other) fail(other " wall particle(s) with neither 5 nor 6 bonds")
@@ -94,18 +106,22 @@ check_data() {
       }
       printf "  %d cell(s), %d atoms, %d bonds, %d triangles, gap %g\n", nmol, n_atoms, n_bonds, n_angles, gap
       exit bad > 0
-    }' nmol_single="$6" geodesic="${7:-0}" "$1"
+    }' nmol_single="$6" geodesic="${7:-0}" rho0="${8:-1000}" wall_mass="${9:-0}" "$1"
 }
 
 # run NAME WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL -- cellgen args...
 # Without --mesh spiral the wall must be a geodesic icosahedron (12 five-bonded particles).
 run() {
-  local name=$1 wall=$2 fluid=$3 ftol=$4 vtol=$5 single=$6 geodesic=1
+  local name=$1 wall=$2 fluid=$3 ftol=$4 vtol=$5 single=$6 geodesic=1 rho0=1000 wmass=0
   shift 7
   case " $* " in *" --mesh spiral "*) geodesic=0 ;; esac
+  local args=("$@") k
+  for ((k = 0; k + 1 < ${#args[@]}; k++)); do
+    case ${args[k]} in --rho0) rho0=${args[k + 1]} ;; --wall-mass) wmass=${args[k + 1]} ;; esac
+  done
   echo "[$name] cellgen $*"
   if "$bin" "$@" --out "$tmp/$name.data" >"$tmp/$name.log" 2>&1 &&
-    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single" "$geodesic"; then
+    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single" "$geodesic" "$rho0" "$wmass"; then
     echo "  ok"
   else
     cat "$tmp/$name.log"
