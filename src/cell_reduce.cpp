@@ -10,6 +10,7 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "pair_cell_sph.h"
 #include "pair_cell_wall.h"
 
 #include <algorithm>
@@ -33,7 +34,7 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
     Pointers(lmp),
     command(command_in), group_name(group->names[igroup]), groupbit(group->bitmask[igroup]),
     fluidtype(fluid), walltype(wall), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
-    wallpair(nullptr)
+    wallpair(nullptr), sphpair(nullptr)
 {
   for (int type : {fluid, wall})
     if (type < 1 || type > atom->ntypes)
@@ -99,11 +100,12 @@ void CellReduce::init()
   ixref = atom->find_custom("xref", flag, cols);
   if (flag != 1 || cols != 3) ixref = -1;
 
-  // the wall load comes from pair cell/wall (also as a hybrid sub-style)
+  // the wall load comes from pair cell/wall (also as a hybrid sub-style) and from the wall
+  // boundary of pair cell/sph (pair_coeff I J wall), when these are defined
   wallpair = dynamic_cast<PairCellWall *>(force->pair_match("cell/wall", 0));
-  if (wallpair)
-    wallpair->request_wall_load(fluidtype, walltype, command);
-  else if (measure == TURGOR_WALL)
+  sphpair = dynamic_cast<PairCellSPH *>(force->pair_match("cell/sph", 0));
+  if (wallpair) wallpair->request_wall_load(fluidtype, walltype, command);
+  if (!wallpair && !(sphpair && sphpair->has_wall_boundary()) && measure == TURGOR_WALL)
     error->all(FLERR,
                "{}: turgor wall (the default) needs the wall load from pair_style cell/wall; add "
                "it or use 'turgor sph'",
@@ -174,6 +176,7 @@ void CellReduce::reduce(const double *bond_gt0)
   const int *mask = atom->mask;
   const int newton_bond = force->newton_bond;
   double **load = wallpair ? wallpair->wall_load() : nullptr;
+  double **sphload = sphpair ? sphpair->wall_load() : nullptr;
 
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -209,12 +212,13 @@ void CellReduce::reduce(const double *bond_gt0)
     s[WXY] += b[0] * b[1];
     s[WXZ] += b[0] * b[2];
     s[WYZ] += b[1] * b[2];
-    if (load) {
-      s[LOADVIR] += b[0] * load[i][0] + b[1] * load[i][1] + b[2] * load[i][2];
-      s[LOADX] += load[i][0];
-      s[LOADY] += load[i][1];
-      s[LOADZ] += load[i][2];
-    }
+    for (double **l : {load, sphload})
+      if (l) {
+        s[LOADVIR] += b[0] * l[i][0] + b[1] * l[i][1] + b[2] * l[i][2];
+        s[LOADX] += l[i][0];
+        s[LOADY] += l[i][1];
+        s[LOADZ] += l[i][2];
+      }
 
     for (int m = 0; atom->num_angle && m < atom->num_angle[i]; m++) {
       if (atom->angle_atom2[i][m] != tag[i] || atom->angle_type[i][m] <= 0) continue;

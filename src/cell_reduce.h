@@ -76,7 +76,7 @@ class CellReduce : protected Pointers {
   double turgor(int c) const { return measure == TURGOR_WALL ? wall_turgor(c) : sph_turgor(c); }
   double sph_turgor(int c) const;
   double wall_turgor(int c) const;
-  bool has_wall_load() const { return wallpair != nullptr; }
+  bool has_wall_load() const { return wallpair != nullptr || sphpair != nullptr; }
   bool wall_measure() const { return measure == TURGOR_WALL; }
   double mean_gt0(int c) const;
   void gyration(int c, double s[6]) const;
@@ -87,6 +87,7 @@ class CellReduce : protected Pointers {
   int irho, ipressure, ixref;
   int measure;
   class PairCellWall *wallpair;    // tallies the wall load, nullptr if none
+  class PairCellSPH *sphpair;      // its wall boundary carries the rest of the load, or nullptr
   std::vector<tagint> ids;         // cell (molecule) IDs, ascending
   std::vector<double> ref;         // reference point of each cell (unwrapped), 3 per cell
   std::vector<double> local, total;

@@ -28,6 +28,8 @@
 
 using namespace LAMMPS_NS;
 
+static const int RESTART_VERSION = 2;    // 2: per type pair, whether it is a wall boundary pair
+
 static const char *const EOS_NAMES[] = {"linear", "tait"};
 
 /* ---------------------------------------------------------------------- */
@@ -36,14 +38,17 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), rho0(nullptr),
     bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr), invrho0(nullptr),
     eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1),
-    prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
-    pairmu(nullptr), maxfirst(0), maxpairs(0)
+    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), wallarea(nullptr), deficit(nullptr),
+    wallload(nullptr), nwallpairs(0), maxwallpairs(0), wallfluid(nullptr), wallatom(nullptr),
+    wallgrad(nullptr), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
+    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairmu(nullptr), maxfirst(0),
+    maxpairs(0)
 {
   restartinfo = 1;
   writedata = 1;
   reinitflag = 0;
-  comm_forward = 2;    // rho, pressure
-  comm_reverse = 1;    // rho
+  comm_forward = 3;    // rho, pressure; or the wall area vectors
+  comm_reverse = 3;    // rho and the kernel deficit; or the wall area vectors or wall load
 }
 
 /* ---------------------------------------------------------------------- */
@@ -56,7 +61,14 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairj);
   memory->destroy(pairdw);
   memory->destroy(pairmu);
+  memory->destroy(wallarea);
+  memory->destroy(deficit);
+  memory->destroy(wallload);
+  memory->destroy(wallfluid);
+  memory->destroy(wallatom);
+  memory->destroy(wallgrad);
   if (allocated) {
+    memory->destroy(boundary);
     memory->destroy(setflag);
     memory->destroy(cutsq);
     memory->destroy(rho0);
@@ -77,30 +89,48 @@ void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  if (atom->nmax > nmax) {
+  if (atom->nmax > nmax || (walls && !deficit)) {
     nmax = atom->nmax;
     memory->destroy(prho2);
     memory->destroy(rhoinv);
     memory->create(prho2, nmax, "pair:prho2");
     memory->create(rhoinv, nmax, "pair:rhoinv");
+    if (walls) {
+      memory->destroy(wallarea);
+      memory->destroy(deficit);
+      memory->destroy(wallload);
+      memory->create(wallarea, nmax, 3, "pair:wallarea");
+      memory->create(deficit, nmax, "pair:deficit");
+      memory->create(wallload, nmax, 3, "pair:wallload");
+    }
   }
 
   // the loops compiled for this kernel, with or without viscosity and tallies
   typedef void (PairCellSPH::*Loop)();
-  static const Loop DENSITY[2][CellKernel::NTYPES] = {
-      {&PairCellSPH::sum_density<CellKernel::WENDLAND, 0>,
-       &PairCellSPH::sum_density<CellKernel::CUBIC, 0>,
-       &PairCellSPH::sum_density<CellKernel::QUINTIC, 0>,
-       &PairCellSPH::sum_density<CellKernel::LUCY, 0>},
-      {&PairCellSPH::sum_density<CellKernel::WENDLAND, 1>,
-       &PairCellSPH::sum_density<CellKernel::CUBIC, 1>,
-       &PairCellSPH::sum_density<CellKernel::QUINTIC, 1>,
-       &PairCellSPH::sum_density<CellKernel::LUCY, 1>}};
+  static const Loop DENSITY[2][2][CellKernel::NTYPES] = {
+      {{&PairCellSPH::sum_density<CellKernel::WENDLAND, 0, 0>,
+        &PairCellSPH::sum_density<CellKernel::CUBIC, 0, 0>,
+        &PairCellSPH::sum_density<CellKernel::QUINTIC, 0, 0>,
+        &PairCellSPH::sum_density<CellKernel::LUCY, 0, 0>},
+       {&PairCellSPH::sum_density<CellKernel::WENDLAND, 1, 0>,
+        &PairCellSPH::sum_density<CellKernel::CUBIC, 1, 0>,
+        &PairCellSPH::sum_density<CellKernel::QUINTIC, 1, 0>,
+        &PairCellSPH::sum_density<CellKernel::LUCY, 1, 0>}},
+      {{&PairCellSPH::sum_density<CellKernel::WENDLAND, 0, 1>,
+        &PairCellSPH::sum_density<CellKernel::CUBIC, 0, 1>,
+        &PairCellSPH::sum_density<CellKernel::QUINTIC, 0, 1>,
+        &PairCellSPH::sum_density<CellKernel::LUCY, 0, 1>},
+       {&PairCellSPH::sum_density<CellKernel::WENDLAND, 1, 1>,
+        &PairCellSPH::sum_density<CellKernel::CUBIC, 1, 1>,
+        &PairCellSPH::sum_density<CellKernel::QUINTIC, 1, 1>,
+        &PairCellSPH::sum_density<CellKernel::LUCY, 1, 1>}}};
   static const Loop FORCES[2][2] = {
       {&PairCellSPH::sum_forces<0, 0>, &PairCellSPH::sum_forces<0, 1>},
       {&PairCellSPH::sum_forces<1, 0>, &PairCellSPH::sum_forces<1, 1>}};
 
-  (this->*DENSITY[viscous][kernel])();
+  if (walls) wall_areas();
+  (this->*DENSITY[walls][viscous][kernel])();
+  commode = COMM_DENSITY;
   if (force->newton_pair) CellCompat::reverse_comm(comm, this);
   apply_eos();
   CellCompat::forward_comm(comm, this);
@@ -116,6 +146,14 @@ void PairCellSPH::compute(int eflag, int vflag)
     }
 
   (this->*FORCES[viscous][evflag ? 1 : 0])();
+  if (walls) {
+    if (evflag)
+      wall_forces<1>();
+    else
+      wall_forces<0>();
+    commode = COMM_LOAD;
+    if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+  }
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -125,9 +163,10 @@ void PairCellSPH::compute(int eflag, int vflag)
    ghost) atoms; the pairs inside the support into pairj, pairdw (and pairmu)
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int VISCOUS> void PairCellSPH::sum_density()
+template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
 {
   double **x = atom->x;
+  const tagint *molecule = atom->molecule;
   double *rho = atom->dvector[irho];
   const double *rmass = atom->rmass;
   const int *type = atom->type;
@@ -153,6 +192,11 @@ template <int KERNEL, int VISCOUS> void PairCellSPH::sum_density()
   if (newton_pair) {
     const int nall = nlocal + atom->nghost;
     for (int i = nlocal; i < nall; i++) rho[i] = 0.0;
+  }
+  if (WALLS) {
+    const int nall = nlocal + atom->nghost;
+    for (int i = 0; i < nall; i++) deficit[i] = 0.0;
+    nwallpairs = 0;
   }
 
   int npairs = 0;
@@ -180,6 +224,31 @@ template <int KERNEL, int VISCOUS> void PairCellSPH::sum_density()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const PairConst &p = pci[type[j]];
       if (rsq >= p.cutsq) continue;
+      if (WALLS && p.boundary) {
+        if (molecule[i] != molecule[j]) continue;
+        // r = x_w - x_f from the fluid atom f to the wall atom w of its own cell
+        const bool ifluid = fluid[type[i]];
+        const int f = ifluid ? i : j;
+        const int w = ifluid ? j : i;
+        const double sign = ifluid ? -1.0 : 1.0;
+        const double rx = sign * delx, ry = sign * dely, rz = sign * delz;
+        const double r = sqrt(rsq);
+        const double *sw = wallarea[w];
+        const double rs = rx * sw[0] + ry * sw[1] + rz * sw[2];
+        const double psi = phi_beyond(r * p.scale.invh) / (4.0 * M_PI * rsq * r);
+        // 1 - gamma_f = sum_w Phi(r) (r . s_w) / (4 pi r^3): the kernel outside the cell
+        if (newton_pair || f < nlocal) deficit[f] += psi * rs;
+        // grad_f gamma_f = sum_w psi s_w - (W + 3 psi) (r . s_w) r / r^2
+        const double c = (CellKernel::W<KERNEL>(p.scale, r) + 3.0 * psi) * rs / rsq;
+        if (nwallpairs == maxwallpairs) grow_wallpairs(nwallpairs + 1);
+        wallfluid[nwallpairs] = f;
+        wallatom[nwallpairs] = w;
+        double *g = &wallgrad[3 * nwallpairs++];
+        g[0] = psi * sw[0] - c * rx;
+        g[1] = psi * sw[1] - c * ry;
+        g[2] = psi * sw[2] - c * rz;
+        continue;
+      }
 
       const double r = sqrt(rsq);
       const double mj = rmass[j];
@@ -209,6 +278,127 @@ void PairCellSPH::grow_pairs(int n)
   memory->grow(pairmu, maxpairs, "pair:pairmu");
 }
 
+void PairCellSPH::grow_wallpairs(int n)
+{
+  maxwallpairs = n + n / 2 + 64;
+  memory->grow(wallfluid, maxwallpairs, "pair:wallfluid");
+  memory->grow(wallatom, maxwallpairs, "pair:wallatom");
+  memory->grow(wallgrad, 3 * maxwallpairs, "pair:wallgrad");
+}
+
+/* ----------------------------------------------------------------------
+   s_w of every wall atom, owned and ghost: one third of the outward area vector
+   (1/2) (x_b - x_a) x (x_c - x_a) of each of its triangles (the angles of the wall)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::wall_areas()
+{
+  double **x = atom->x;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int newton_bond = force->newton_bond;
+  for (int i = 0; i < nall; i++) wallarea[i][0] = wallarea[i][1] = wallarea[i][2] = 0.0;
+
+  int **anglelist = neighbor->anglelist;
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
+    const double e1[3] = {x[b][0] - x[a][0], x[b][1] - x[a][1], x[b][2] - x[a][2]};
+    const double e2[3] = {x[c][0] - x[a][0], x[c][1] - x[a][1], x[c][2] - x[a][2]};
+    // s = (1/3) (1/2) e1 x e2 to each vertex
+    const double sx = (e1[1] * e2[2] - e1[2] * e2[1]) / 6.0;
+    const double sy = (e1[2] * e2[0] - e1[0] * e2[2]) / 6.0;
+    const double sz = (e1[0] * e2[1] - e1[1] * e2[0]) / 6.0;
+    for (int v : {a, b, c})
+      if (newton_bond || v < nlocal) {
+        wallarea[v][0] += sx;
+        wallarea[v][1] += sy;
+        wallarea[v][2] += sz;
+      }
+  }
+  commode = COMM_AREA;
+  if (newton_bond) CellCompat::reverse_comm(comm, this);
+  CellCompat::forward_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   the wall term of each boundary pair, F_f = 2 m_f (P_f / rho_f) grad_f gamma_f (the fluid's
+   own pressure mirrored across the wall), its reaction on the wall atom, tallied as wall load
+------------------------------------------------------------------------- */
+
+template <int EVFLAG> void PairCellSPH::wall_forces()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const double *rmass = atom->rmass;
+  const double *rho = atom->dvector[irho];
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  for (int i = 0; i < nall; i++) wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
+
+  for (int k = 0; k < nwallpairs; k++) {
+    const int i = wallfluid[k];
+    const int w = wallatom[k];
+    const double *g = &wallgrad[3 * k];
+    // F_f = 2 m_f (P_f / rho_f) grad_f gamma_f
+    const double c = 2.0 * rmass[i] * prho2[i] * rho[i];
+    const double fx = c * g[0], fy = c * g[1], fz = c * g[2];
+    if (newton_pair || i < nlocal) {
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+    }
+    if (newton_pair || w < nlocal) {
+      f[w][0] -= fx;
+      f[w][1] -= fy;
+      f[w][2] -= fz;
+      wallload[w][0] -= fx;
+      wallload[w][1] -= fy;
+      wallload[w][2] -= fz;
+    }
+    if (EVFLAG)
+      ev_tally_xyz(i, w, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, x[i][0] - x[w][0],
+                   x[i][1] - x[w][1], x[i][2] - x[w][2]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   Phi(q), the fraction of the 3-D kernel beyond q = r/h, and dPhi/dq = -4 pi q^2 W(q) at h = 1,
+   tabulated from the kernel (3-point Gauss-Legendre per step, exact for the kernels' pieces,
+   which end on table points) for cubic Hermite interpolation
+------------------------------------------------------------------------- */
+
+void PairCellSPH::tabulate_phi()
+{
+  const double support = CellKernel::support(kernel);
+  const int n = 512 * static_cast<int>(support);
+  const CellKernel::Scale unit = CellKernel::scale(kernel, 3, 1.0);
+  const auto shell = [&](double q) { return 4.0 * M_PI * q * q * CellKernel::W(kernel, unit, q); };
+  static const double GX = 0.7745966692414834, GW0 = 8.0 / 9.0, GW1 = 5.0 / 9.0;
+  phidq = support / n;
+  phi.assign(n + 1, 0.0);
+  dphi.assign(n + 1, 0.0);
+  for (int k = n - 1; k >= 0; k--) {
+    const double mid = (k + 0.5) * phidq, half = 0.5 * phidq;
+    const double sum = GW0 * shell(mid) + GW1 * (shell(mid - half * GX) + shell(mid + half * GX));
+    phi[k] = phi[k + 1] + half * sum;
+    dphi[k] = -shell(k * phidq);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairCellSPH::phi_beyond(double q) const
+{
+  const int k = static_cast<int>(q / phidq);
+  if (k >= static_cast<int>(phi.size()) - 1) return 0.0;
+  const double t = q / phidq - k;
+  const double t2 = t * t, t3 = t2 * t;
+  // cubic Hermite between the table points k and k + 1
+  return (2.0 * t3 - 3.0 * t2 + 1.0) * phi[k] + (t3 - 2.0 * t2 + t) * phidq * dphi[k] +
+      (3.0 * t2 - 2.0 * t3) * phi[k + 1] + (t3 - t2) * phidq * dphi[k + 1];
+}
+
 /* ----------------------------------------------------------------------
    pressure of owned fluid atoms from their density; P/rho^2 and 1/rho for the force pass;
    the equation-of-state energy m_i e(rho_i), e' = P/rho^2, whose gradient is the pressure force
@@ -236,7 +426,7 @@ void PairCellSPH::unstable(int i) const
 
 void PairCellSPH::apply_eos()
 {
-  const double *rho = atom->dvector[irho];
+  double *rho = atom->dvector[irho];
   double *pressure = atom->dvector[ipressure];
   const double *rmass = atom->rmass;
   const int *type = atom->type;
@@ -246,6 +436,9 @@ void PairCellSPH::apply_eos()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int t = type[i];
+    if (!fluid[t]) continue;
+    // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
+    if (walls) rho[i] /= std::max(1.0 - deficit[i], gamma_min);
     const double x = rho[i] * invrho0[t];
     double e = 0.0;
     if (eos == TAIT) {
@@ -341,6 +534,7 @@ void PairCellSPH::allocate()
   memory->create(mu, n, n, "pair:mu");
   memory->create(h, n, n, "pair:h");
   memory->create(pc, n, n, "pair:pc");
+  memory->create(boundary, n, n, "pair:boundary");
   memory->create(wself, n, "pair:wself");
   memory->create(invrho0, n, "pair:invrho0");
   memory->create(eosk, n, "pair:eosk");
@@ -349,7 +543,8 @@ void PairCellSPH::allocate()
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
       rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
-      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0};
+      boundary[i][j] = 0;
+      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0};
     }
     wself[i] = invrho0[i] = eosk[i] = 0.0;
     fluid[i] = 0;
@@ -413,8 +608,15 @@ void PairCellSPH::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  double rho0_one, bulk_one, mu_one, h_one;
-  if (narg == 4 && strcmp(arg[2], "file") == 0) {
+  double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0;
+  const int wall = narg == 3 && strcmp(arg[2], "wall") == 0;
+  if (wall) {
+    if (ilo <= jhi && jlo <= ihi)
+      error->all(FLERR,
+                 "Pair_coeff cell/sph: {} {} wall: a type cannot be the wall of itself (give the "
+                 "fluid type and the wall type)",
+                 arg[0], arg[1]);
+  } else if (narg == 4 && strcmp(arg[2], "file") == 0) {
     CellParams params(lmp, arg[3], "pair_coeff cell/sph");
     rho0_one = params.positive("sph_rho0");
     bulk_one = params.positive("sph_K");
@@ -429,7 +631,8 @@ void PairCellSPH::coeff(int narg, char **arg)
     if (narg != 6)
       error->all(FLERR,
                  "Incorrect args for pair_coeff cell/sph: expected 'pair_coeff <I> <J> <rho0> "
-                 "<K> <mu> <h>' or 'pair_coeff <I> <J> file <parameter file>', got {} args",
+                 "<K> <mu> <h>', 'pair_coeff <I> <J> file <parameter file>' or 'pair_coeff "
+                 "<fluid> <wall> wall', got {} args",
                  narg);
     rho0_one = utils::numeric(FLERR, arg[2], false, lmp);
     bulk_one = utils::numeric(FLERR, arg[3], false, lmp);
@@ -452,6 +655,7 @@ void PairCellSPH::coeff(int narg, char **arg)
       bulk[i][j] = bulk_one;
       mu[i][j] = mu_one;
       h[i][j] = h_one;
+      boundary[i][j] = wall;
       setflag[i][j] = 1;
       count++;
     }
@@ -487,12 +691,27 @@ void PairCellSPH::init_style()
   const int n = atom->ntypes;
   viscous = 0;
   bool all_set = true;
+  walls = 0;
   for (int i = 1; i <= n; i++) {
     fluid[i] = setflag[i][i];
     for (int j = i; j <= n; j++) {
       if (setflag[i][j] && mu[i][j] > 0.0) viscous = 1;
+      if (setflag[i][j] && boundary[i][j]) walls = 1;
       all_set = all_set && setflag[i][j];
     }
+  }
+  if (walls) {
+    if (domain->dimension != 3)
+      error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
+    if (!atom->molecule_flag)
+      error->all(FLERR,
+                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs cell (molecule) "
+                 "IDs: use atom_style angle");
+    if (!force->angle)
+      error->all(FLERR,
+                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs the wall "
+                 "triangles as angles: define an angle style (angle_style zero)");
+    tabulate_phi();
   }
   writedata = all_set ? 1 : 0;
   if (viscous && !comm->ghost_velocity)
@@ -521,8 +740,20 @@ void PairCellSPH::init_style()
 double PairCellSPH::init_one(int i, int j)
 {
   if (!setflag[i][j]) {
-    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0};
+    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0};
     return 0.0;
+  }
+  if (boundary[i][j]) {
+    const int f = setflag[i][i] ? i : j, w = f == i ? j : i;
+    if (!setflag[f][f] || setflag[w][w])
+      error->all(FLERR,
+                 "Pair cell/sph: pair_coeff {} {} wall needs one fluid type (with pair_coeff K K "
+                 "cell/sph) and one wall type (without)",
+                 i, j);
+    const double support = CellKernel::support(kernel) * h[f][f];
+    pc[i][j] = PairConst{support * support, CellKernel::scale(kernel, 3, h[f][f]), 0.0, 1};
+    pc[j][i] = pc[i][j];
+    return cut_global > 0.0 ? std::max(cut_global, support) : support;
   }
   for (int t : {i, j}) {
     if (!setflag[t][t])
@@ -549,6 +780,7 @@ double PairCellSPH::init_one(int i, int j)
   pc[i][j].cutsq = support * support;
   pc[i][j].scale = CellKernel::scale(kernel, dim, h[i][j]);
   pc[i][j].mu2 = 2.0 * mu[i][j];
+  pc[i][j].boundary = 0;
   pc[j][i] = pc[i][j];
 
   if (i == j) {
@@ -568,6 +800,7 @@ void PairCellSPH::write_restart(FILE *fp)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (setflag[i][j]) {
+        fwrite(&boundary[i][j], sizeof(int), 1, fp);
         fwrite(&rho0[i][j], sizeof(double), 1, fp);
         fwrite(&bulk[i][j], sizeof(double), 1, fp);
         fwrite(&mu[i][j], sizeof(double), 1, fp);
@@ -588,6 +821,10 @@ void PairCellSPH::read_restart(FILE *fp)
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j]) {
+        if (restart_version >= 2) {
+          if (me == 0) utils::sfread(FLERR, &boundary[i][j], sizeof(int), 1, fp, nullptr, error);
+          MPI_Bcast(&boundary[i][j], 1, MPI_INT, 0, world);
+        }
         double values[4];
         if (me == 0) utils::sfread(FLERR, values, sizeof(double), 4, fp, nullptr, error);
         MPI_Bcast(values, 4, MPI_DOUBLE, 0, world);
@@ -603,6 +840,9 @@ void PairCellSPH::read_restart(FILE *fp)
 
 void PairCellSPH::write_restart_settings(FILE *fp)
 {
+  // version 1 (no marker) began with the kernel index >= 0; later versions with -version
+  const int marker = -RESTART_VERSION;
+  fwrite(&marker, sizeof(int), 1, fp);
   fwrite(&kernel, sizeof(int), 1, fp);
   fwrite(&eos, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
@@ -613,10 +853,20 @@ void PairCellSPH::write_restart_settings(FILE *fp)
 void PairCellSPH::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) {
-    utils::sfread(FLERR, &kernel, sizeof(int), 1, fp, nullptr, error);
+    int first;
+    utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
+    restart_version = first >= 0 ? 1 : -first;
+    if (first < 0) utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
+    kernel = first;
     utils::sfread(FLERR, &eos, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
   }
+  MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
+  if (restart_version > RESTART_VERSION)
+    error->all(FLERR,
+               "Pair cell/sph: the restart file has format version {}, newer than this plugin's "
+               "{}: use a newer cellsph",
+               restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
   MPI_Bcast(&eos, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
@@ -645,8 +895,11 @@ void PairCellSPH::write_data_all(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      fprintf(fp, "%d %d %.16g %.16g %.16g %.16g\n", i, j, rho0[i][j], bulk[i][j], mu[i][j],
-              h[i][j]);
+      if (boundary[i][j])
+        fprintf(fp, "%d %d wall\n", i, j);
+      else
+        fprintf(fp, "%d %d %.16g %.16g %.16g %.16g\n", i, j, rho0[i][j], bulk[i][j], mu[i][j],
+                h[i][j]);
 }
 
 /* ----------------------------------------------------------------------
@@ -659,7 +912,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
 {
   fforce = 0.0;
   const PairConst &p = pc[itype][jtype];
-  if (rsq >= p.cutsq) return 0.0;
+  if (rsq >= p.cutsq || p.boundary) return 0.0;
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
   // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (doc/model.md §3.4)
@@ -694,9 +947,14 @@ void *PairCellSPH::extract(const char *str, int &dim)
 
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
+  int m = 0;
+  if (commode == COMM_AREA) {
+    for (int k = 0; k < n; k++)
+      for (int d = 0; d < 3; d++) buf[m++] = wallarea[list[k]][d];
+    return m;
+  }
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
-  int m = 0;
   for (int k = 0; k < n; k++) {
     buf[m++] = rho[list[k]];
     buf[m++] = pressure[list[k]];
@@ -708,30 +966,69 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
+  int m = 0;
+  if (commode == COMM_AREA) {
+    for (int i = first; i < first + n; i++)
+      for (int d = 0; d < 3; d++) wallarea[i][d] = buf[m++];
+    return;
+  }
   double *rho = atom->dvector[irho];
   double *pressure = atom->dvector[ipressure];
-  int m = 0;
   for (int i = first; i < first + n; i++) {
     rho[i] = buf[m++];
     pressure[i] = buf[m++];
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   ghost sums into owners: rho (and the kernel deficit), the wall area vectors, or the wall load
+------------------------------------------------------------------------- */
 
 int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
 {
-  const double *rho = atom->dvector[irho];
-  for (int k = 0; k < n; k++) buf[k] = rho[first + k];
-  return n;
+  int m = 0;
+  if (commode == COMM_DENSITY) {
+    const double *rho = atom->dvector[irho];
+    for (int i = first; i < first + n; i++) {
+      buf[m++] = rho[i];
+      if (walls) buf[m++] = deficit[i];
+    }
+    return m;
+  }
+  double **v = commode == COMM_AREA ? wallarea : wallload;
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
+  return m;
 }
 
 /* ---------------------------------------------------------------------- */
 
 void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  double *rho = atom->dvector[irho];
-  for (int k = 0; k < n; k++) rho[list[k]] += buf[k];
+  int m = 0;
+  if (commode == COMM_DENSITY) {
+    double *rho = atom->dvector[irho];
+    for (int k = 0; k < n; k++) {
+      rho[list[k]] += buf[m++];
+      if (walls) deficit[list[k]] += buf[m++];
+    }
+    return;
+  }
+  double **v = commode == COMM_AREA ? wallarea : wallload;
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) v[list[k]][d] += buf[m++];
+}
+
+/* ----------------------------------------------------------------------
+   whether a type pair is a wall boundary pair (before init_style, which sets walls)
+------------------------------------------------------------------------- */
+
+bool PairCellSPH::has_wall_boundary() const
+{
+  for (int i = 1; allocated && i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && boundary[i][j]) return true;
+  return false;
 }
 
 /* ---------------------------------------------------------------------- */

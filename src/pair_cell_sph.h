@@ -10,6 +10,8 @@
 #include "cell_kernel.h"
 #include "pair.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairCellSPH : public Pair {
@@ -29,6 +31,9 @@ class PairCellSPH : public Pair {
   void write_data_all(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
   void *extract(const char *, int &) override;
+  // the wall boundary's force of each cell's fluid on its wall atoms (owned atoms), or nullptr
+  double **wall_load() const { return walls ? wallload : nullptr; }
+  bool has_wall_boundary() const;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
@@ -45,21 +50,38 @@ class PairCellSPH : public Pair {
 
   struct PairConst {
     double cutsq;               // (kernel support)^2; 0 if the pair is not computed
-    CellKernel::Scale scale;    // kernel constants at this pair's h
+    CellKernel::Scale scale;    // kernel constants at this pair's h (the fluid's for a boundary)
     double mu2;                 // mu_i + mu_j
+    int boundary;               // 1: fluid-wall pair of the wall boundary, no SPH sums
   };
   PairConst **pc;    // per type pair, from init_one()
 
-  double *wself;       // W(0) at the h of pair_coeff I I: self term of the density, per type
-  double *invrho0;     // 1 / rho0 per type (equation of state of pair_coeff I I)
-  double *eosk;        // K (linear) or K/7 (Tait) per type
-  int *fluid;          // 1 if the type takes part in cell/sph
-  int viscous;         // 1 if any computed pair has mu > 0
-  double shared[2];    // rho0 and K shared by all fluid types, for extract()
-
+  double *wself;          // W(0) at the h of pair_coeff I I: self term of the density, per type
+  double *invrho0;        // 1 / rho0 per type (equation of state of pair_coeff I I)
+  double *eosk;           // K (linear) or K/7 (Tait) per type
+  int *fluid;             // 1 if the type takes part in cell/sph
+  int viscous;            // 1 if any computed pair has mu > 0
+  double shared[2];       // rho0 and K shared by all fluid types, for extract()
   int irho, ipressure;    // custom per-atom vectors rho and pressure
-  double *prho2;          // P / rho^2 of owned and ghost fluid atoms
-  double *rhoinv;         // 1 / rho of owned and ghost fluid atoms
+
+  // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
+  // cell's wall; the wall enters as the surface integral of its triangles (doc/pair_cell_sph.md)
+  int **boundary;      // 1 for a fluid-wall type pair of the wall boundary
+  int walls;           // 1 if any type pair is a boundary pair
+  double gamma_min;    // floor of the kernel fraction gamma inside the cell
+  double phidq;        // q step of the table of Phi(q) = kernel fraction beyond q = r/h
+  std::vector<double> phi, dphi;    // Phi and dPhi/dq at the table points
+  double **wallarea;    // s_w: one third of the outward area vectors of wall atom w's triangles
+  double *deficit;      // 1 - gamma_i of fluid atom i
+  double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
+  int nwallpairs, maxwallpairs;
+  int *wallfluid, *wallatom;    // boundary pairs found by the density pass: fluid and wall atom
+  double *wallgrad;             // grad_i gamma_i term of the pair (3 per pair)
+  enum { COMM_DENSITY, COMM_AREA, COMM_LOAD } commode;
+  int restart_version;    // format version of the restart file read, 1 = before versions
+
+  double *prho2;     // P / rho^2 of owned and ghost fluid atoms
+  double *rhoinv;    // 1 / rho of owned and ghost fluid atoms
   int nmax;
 
   // pairs inside the kernel support, found by the density pass and reused by the force pass
@@ -71,8 +93,13 @@ class PairCellSPH : public Pair {
 
   void allocate();
   void unstable(int) const;
-  template <int KERNEL, int VISCOUS> void sum_density();
+  template <int KERNEL, int VISCOUS, int WALLS> void sum_density();
   template <int VISCOUS, int EVFLAG> void sum_forces();
+  template <int EVFLAG> void wall_forces();
+  void wall_areas();
+  void tabulate_phi();
+  double phi_beyond(double q) const;
+  void grow_wallpairs(int);
   void apply_eos();
   void grow_pairs(int);
 };
