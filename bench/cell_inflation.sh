@@ -19,7 +19,7 @@ build=${CELLSPH_BUILD:-$here/../build}
 out=${OUT:-/tmp/cellsph-bench/cell_inflation}
 lmp=$build/bin/lmp
 cellgen=$build/tools/cellgen/cellgen
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 
 # run <name> <lmp -var arguments...>: one inflation series in $out/<name>
 run() {

@@ -11,7 +11,7 @@ build=${CELLSPH_BUILD:-$here/../build}
 out=${OUT:-/tmp/cellsph-bench/cell_model_speed}
 nsteps=${1:-5000}
 repeats=${2:-3}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 mkdir -p "$out"
 cd "$out"
 "$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell.data >cellgen.log

@@ -15,7 +15,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
 work=${INFLATION_BENCH_DIR:-/tmp/cellsph-inflation-bench}
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../potentials}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 mkdir -p "$work"
 cd "$work"
 rm -f series_*.dat final_*.txt runs.txt

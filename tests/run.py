@@ -18,8 +18,9 @@ import shutil
 import subprocess
 import sys
 
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
+ENV = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
+if os.geteuid() == 0:    # Open MPI refuses to run as root unless told it may
+    ENV.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
 def directives(path):
