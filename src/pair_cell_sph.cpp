@@ -105,7 +105,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     }
   }
 
-  // the loops compiled for this kernel, with or without viscosity and tallies
+  // the loops compiled for this kernel, with or without wall boundary, viscosity and tallies
   typedef void (PairCellSPH::*Loop)();
   static const Loop DENSITY[2][2][CellKernel::NTYPES] = {
       {{&PairCellSPH::sum_density<CellKernel::WENDLAND, 0, 0>,
@@ -691,15 +691,14 @@ void PairCellSPH::init_style()
   const int n = atom->ntypes;
   viscous = 0;
   bool all_set = true;
-  walls = 0;
   for (int i = 1; i <= n; i++) {
     fluid[i] = setflag[i][i];
     for (int j = i; j <= n; j++) {
       if (setflag[i][j] && mu[i][j] > 0.0) viscous = 1;
-      if (setflag[i][j] && boundary[i][j]) walls = 1;
       all_set = all_set && setflag[i][j];
     }
   }
+  walls = has_wall_boundary() ? 1 : 0;
   if (walls) {
     if (domain->dimension != 3)
       error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
