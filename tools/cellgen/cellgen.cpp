@@ -25,7 +25,9 @@ constexpr const char *kUsage =
     "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--mesh icosahedral|spiral]\n"
     "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
     "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
-    "               --out FILE.data\n"
+    "               [--margin F=0.5] --out FILE.data\n"
+    "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
+    "            room to deform: compressing a cell to half its height needs F >= 1.\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
 
 struct UsageError : std::runtime_error {
@@ -43,6 +45,7 @@ struct Options {
   double rho0 = 1000.0;
   std::array<long, 3> cells{1, 1, 1};
   double spread = 0.0;
+  double margin = 0.5;
   std::uint64_t seed = 1;
   std::string out;
 };
@@ -115,6 +118,7 @@ const std::map<std::string, Handler> &optionHandlers()
       {"--wall-mass", [](ArgReader &a, Options &o) { o.wallMass = a.real(); }},
       {"--spacing", [](ArgReader &a, Options &o) { o.spacing = a.real(); }},
       {"--radius-spread", [](ArgReader &a, Options &o) { o.spread = a.real(); }},
+      {"--margin", [](ArgReader &a, Options &o) { o.margin = a.real(); }},
       {"--seed",
        [](ArgReader &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
       {"--out", [](ArgReader &a, Options &o) { o.out = a.word(); }},
@@ -145,6 +149,8 @@ void validate(const Options &o)
   require(!o.wallMass || *o.wallMass > 0, "--wall-mass must be positive");
   require(!o.spacing || *o.spacing > 0, "--spacing must be positive");
   require(o.spread >= 0 && o.spread < 1, "--radius-spread must be in [0, 1)");
+  require(o.margin > 0 && o.margin <= 1000,
+          "--margin must be in (0, 1000] (box margin as a multiple of R; default 0.5)");
   require(std::all_of(o.cells.begin(), o.cells.end(), [](long c) { return c >= 1 && c <= 1000; }),
           "--cells needs three counts in [1, 1000]");
   require(!o.out.empty(), "--out FILE is required");
@@ -351,7 +357,7 @@ void run(const Options &o, const std::string &args)
   params.rho0 = o.rho0;
   params.withFluid = o.nfluid > 0;
   params.wallMass = o.wallMass;
-  params.boxMargin = 0.5 * o.radius;
+  params.boxMargin = o.margin * o.radius;
   const System sys = buildSystem(unit, cells, params);
   const SurfaceStats stats = surfaceStats(unit);
   const Totals t = totals(sys, cells, stats);

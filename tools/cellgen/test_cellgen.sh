@@ -177,12 +177,34 @@ echo "[determinism] same seed, same file (apart from the comment line naming it)
 "$bin" --cells 2 2 1 --radius-spread 0.1 --seed 3 --nwall 200 --out "$tmp/b.data" >/dev/null
 if cmp -s <(tail -n +2 "$tmp/a.data") <(tail -n +2 "$tmp/b.data"); then echo "  ok"; else echo "  FAIL: outputs differ"; failed=1; fi
 
+echo "[margin] the box reaches F R beyond the cells on each side (default F = 0.5)"
+for c in "default 0.5" "1 1" "2.5 2.5"; do
+  set -- $c
+  margin=()
+  [ "$1" = default ] || margin=(--margin "$1")
+  "$bin" --radius 20e-6 --nwall 200 --nfluid 50 --cells 2 1 1 "${margin[@]}" --out "$tmp/m.data" >/dev/null
+  # cells 2R(1.05) apart along x: x from -(1.05 R + R + F R) to +, y and z from -(R + F R) to +
+  if awk -v f="$2" 'function abs(v) { return v < 0 ? -v : v }
+    $3 == "xlo" { x = $1; xx = $2 } $3 == "ylo" { y = $1; yy = $2 } $3 == "zlo" { z = $1; zz = $2 }
+    END { r = 20e-6; ex = 1.05 * r + r + f * r; ey = r + f * r
+      exit !(abs(x + ex) < 1e-12 * ex && abs(xx - ex) < 1e-12 * ex && abs(y + ey) < 1e-12 * ey &&
+             abs(yy - ey) < 1e-12 * ey && abs(z + ey) < 1e-12 * ey && abs(zz - ey) < 1e-12 * ey) }' "$tmp/m.data"; then
+    echo "  ok: --margin $1: $(grep -m1 xlo "$tmp/m.data")"
+  else
+    echo "  FAIL: --margin $1: box $(grep -E 'lo .*hi' "$tmp/m.data" | tr '\n' ' ')"
+    failed=1
+  fi
+done
+
 expect_error overlap -- --cells 2 1 1 --spacing 100e-6
 expect_error badnumber -- --radius 75um
 expect_error unknown -- --bogus 1
 expect_error twod -- --2d
 expect_error gap-too-large -- --gap 80e-6
 expect_error bad-mesh -- --mesh cubic
+expect_error margin-zero -- --margin 0
+expect_error margin-negative -- --margin -1
+expect_error margin-not-a-number -- --margin 1R
 
 if [ "$failed" -ne 0 ]; then
   echo "test_cellgen: FAILED"
