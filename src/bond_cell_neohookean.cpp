@@ -25,6 +25,7 @@ using namespace LAMMPS_NS;
 
 static const char *const LAW_NAMES[] = {"neohookean", "linear"};
 static constexpr double SQRT3_6 = 0.28867513459481287;    // sqrt(3) / 6
+static constexpr int RESTART_VERSION = 2;    // 2: the payload begins with -version (1: none)
 
 /* ---------------------------------------------------------------------- */
 
@@ -285,6 +286,9 @@ double BondCellNeoHookean::equilibrium_distance(int type)
 
 void BondCellNeoHookean::write_restart(FILE *fp)
 {
+  // version 1 (no marker) began with G of bond type 1 > 0; later versions with -version
+  const double marker = -RESTART_VERSION;
+  fwrite(&marker, sizeof(double), 1, fp);
   const int n = atom->nbondtypes;
   fwrite(&shear[1], sizeof(double), n, fp);
   fwrite(&thickness[1], sizeof(double), n, fp);
@@ -298,8 +302,20 @@ void BondCellNeoHookean::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->nbondtypes;
+  double first = 0.0;
+  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
+  const int version = first < 0.0 ? (int) lround(-first) : 1;
+  if (version > RESTART_VERSION)
+    error->all(FLERR,
+               "Bond style cell/neohookean: the restart file has format version {}, newer than "
+               "this plugin's {}: use a newer cellsph",
+               version, RESTART_VERSION);
   if (comm->me == 0) {
-    utils::sfread(FLERR, &shear[1], sizeof(double), n, fp, nullptr, error);
+    // version 1: the value read was G of bond type 1
+    if (version == 1) shear[1] = first;
+    const int skip = version == 1 ? 1 : 0;
+    utils::sfread(FLERR, &shear[1 + skip], sizeof(double), n - skip, fp, nullptr, error);
     utils::sfread(FLERR, &thickness[1], sizeof(double), n, fp, nullptr, error);
     utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
     utils::sfread(FLERR, &law[1], sizeof(int), n, fp, nullptr, error);

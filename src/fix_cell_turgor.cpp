@@ -28,7 +28,8 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-static const int NVALUES = 5;    // restart values per cell: ID, mass0, pi0, warned, offset
+static const int NVALUES = 5;            // restart values per cell: ID, mass0, pi0, warned, offset
+static const int RESTART_VERSION = 2;    // 2: the state begins with -version (1: none)
 
 /* ---------------------------------------------------------------------- */
 
@@ -358,7 +359,9 @@ double FixCellTurgor::compute_vector(int n)
 void FixCellTurgor::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  std::vector<double> list = {(double) state.size(), physical_time, water_moved};
+  // version 1 (no marker) began with the number of cells >= 0; later versions with -version
+  std::vector<double> list = {(double) -RESTART_VERSION, (double) state.size(), physical_time,
+                              water_moved};
   for (const auto &kv : state) {
     list.push_back((double) kv.first);
     list.push_back(kv.second.mass0);
@@ -376,13 +379,32 @@ void FixCellTurgor::write_restart(FILE *fp)
 void FixCellTurgor::restart(char *buf)
 {
   const double *list = (double *) buf;
-  const int n = (int) list[0];
+  const int version = list[0] < 0.0 ? (int) lround(-list[0]) : 1;
+  if (version > RESTART_VERSION)
+    error->all(FLERR,
+               "Fix cell/turgor: the restart file has format version {}, newer than this plugin's "
+               "{}: use a newer cellsph",
+               version, RESTART_VERSION);
+  if (version >= 2) list++;
+  const double count = list[0];
+  if (!(count >= 0.0 && count == floor(count)))
+    error->all(FLERR,
+               "Fix cell/turgor: the restart file's state (format version {}) is not valid: "
+               "number of cells = {}",
+               version, count);
+  const int n = (int) count;
   physical_time = list[1];
   water_moved = list[2];
   state.clear();
   bool other_pi0 = false;
   for (int k = 0; k < n; k++) {
     const double *v = &list[3 + NVALUES * k];
+    // version 1 files written before the offset was stored had 4 values per cell: caught here
+    if (!(v[0] >= 1.0 && v[0] == floor(v[0]) && (v[3] == 0.0 || v[3] == 1.0)))
+      error->all(FLERR,
+                 "Fix cell/turgor: the restart file's state (format version {}) is not valid at "
+                 "cell {} of {}: ID = {}, warned = {}",
+                 version, k + 1, n, v[0], v[3]);
     state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], 0.0};
     other_pi0 = other_pi0 || v[2] != pi0;
   }

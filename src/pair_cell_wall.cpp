@@ -33,6 +33,7 @@ static constexpr int NTERMS = 3;
 static constexpr int NPARAM = 10;    // f0 r0 p1 p2 D alpha ra rc eps sigma
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
+static constexpr int RESTART_VERSION = 2;    // 2: the settings begin with -version (1: none)
 
 static const char *const COEFF_USAGE =
     "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] "
@@ -579,6 +580,9 @@ void PairCellWall::read_restart(FILE *fp)
 
 void PairCellWall::write_restart_settings(FILE *fp)
 {
+  // version 1 (no marker) began with the cutoff > 0; later versions with -version
+  const double marker = -RESTART_VERSION;
+  fwrite(&marker, sizeof(double), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
 }
 
@@ -586,7 +590,18 @@ void PairCellWall::write_restart_settings(FILE *fp)
 
 void PairCellWall::read_restart_settings(FILE *fp)
 {
-  if (comm->me == 0) utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
+  double first = 0.0;
+  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
+  const int version = first < 0.0 ? (int) lround(-first) : 1;
+  if (version > RESTART_VERSION)
+    error->all(FLERR,
+               "Pair cell/wall: the restart file has format version {}, newer than this plugin's "
+               "{}: use a newer cellsph",
+               version, RESTART_VERSION);
+  cut_global = first;
+  if (version >= 2 && comm->me == 0)
+    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
 }
 
