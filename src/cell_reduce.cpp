@@ -156,14 +156,16 @@ int CellReduce::index(tagint molecule) const
    Each triangle (angle a b c, b the middle atom) is counted once, by the owner of b: angles are
    stored with b for newton_bond on and off. Vertices are unwrapped around b, relative to the
    cell's reference point. bond_gt0[type] = G t0 of each bond type, or nullptr for no bond sums.
+   triangles, if not nullptr, is filled with the counted triangles of the owned atoms.
 ------------------------------------------------------------------------- */
 
-void CellReduce::reduce(const double *bond_gt0)
+void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles)
 {
   const int n = ncell();
   local.assign(NCOLUMN * n, 0.0);
   total.resize(NCOLUMN * n);
   cellof.assign(atom->nlocal, -1);
+  if (triangles) triangles->clear();
 
   double **x = atom->x;
   const double *rmass = atom->rmass;
@@ -242,6 +244,9 @@ void CellReduce::reduce(const double *bond_gt0)
       // 2 A = sum |(b - a) x (c - a)|
       s[AREA2] += cross_norm(ab, ac);
       s[NTRI] += 1.0;
+      if (triangles)
+        triangles->insert(triangles->end(),
+                          {(double) c, a[0], a[1], a[2], b[0], b[1], b[2], cc[0], cc[1], cc[2]});
       if (xref) {
         double u[3] = {xref[ia][0] - xref[i][0], xref[ia][1] - xref[i][1],
                        xref[ia][2] - xref[i][2]};

@@ -60,13 +60,17 @@ class CellReduce : protected Pointers {
   void set_turgor(const std::string &value);
   void find_cells();
   void init();
-  void reduce(const double *bond_gt0 = nullptr);
+  // triangles, if given, receives each counted wall triangle as 10 numbers: cell index, then the
+  // corners a, b, c relative to the cell's reference point, unwrapped as for the volume
+  void reduce(const double *bond_gt0 = nullptr, std::vector<double> *triangles = nullptr);
 
   int ncell() const { return (int) ids.size(); }
   tagint id(int c) const { return ids[c]; }
   double get(int c, Column k) const { return total[c * NCOLUMN + k]; }
   // cell index of each owned atom at the last reduce(), -1 if it belongs to no cell of the group
   const std::vector<int> &cell_of_atom() const { return cellof; }
+  // reference point of cell c (unwrapped), the origin of the triangles of reduce()
+  const double *reference(int c) const { return &ref[3 * c]; }
 
   double mass(int c) const { return get(c, MASS); }
   double volume(int c) const { return get(c, VOLUME6) / 6.0; }

@@ -6,7 +6,10 @@
 
 #include "compute_cell_props.h"
 
+#include "atom.h"
 #include "cell_reduce.h"
+#include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_cell_turgor.h"
 #include "math_const.h"
@@ -19,15 +22,40 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
+
+// winding number of the closed surface of ntri triangles (9 numbers each: corners a b c, outward)
+// about p: sum of the solid angles / 4 pi, tan(Omega/2) = a.(b x c) / (|a||b||c| + (a.b)|c| +
+// (a.c)|b| + (b.c)|a|) with corners relative to p (Van Oosterom & Strackee 1983); 1 inside, 0 out
+static double winding_number(const double *tri, int ntri, const double *p)
+{
+  double sum = 0.0;
+  for (int t = 0; t < ntri; t++, tri += 9) {
+    const double ax = tri[0] - p[0], ay = tri[1] - p[1], az = tri[2] - p[2];
+    const double bx = tri[3] - p[0], by = tri[4] - p[1], bz = tri[5] - p[2];
+    const double cx = tri[6] - p[0], cy = tri[7] - p[1], cz = tri[8] - p[2];
+    const double la = sqrt(ax * ax + ay * ay + az * az);
+    const double lb = sqrt(bx * bx + by * by + bz * bz);
+    const double lc = sqrt(cx * cx + cy * cy + cz * cz);
+    const double num =
+        ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+    const double den = la * lb * lc + (ax * bx + ay * by + az * bz) * lc +
+        (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
+    sum += atan2(num, den);
+  }
+  // Omega = 2 atan2(num, den); w = sum Omega / 4 pi
+  return sum / (2.0 * MY_PI);
+}
 
 /* ---------------------------------------------------------------------- */
 
 ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
 {
-  int fluidtype = 1, walltype = 2;
+  int walltype = 2;
+  fluidtype = 1;
   std::string measure = "wall";
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -82,7 +110,8 @@ void ComputeCellProps::init()
 void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
-  cells->reduce();
+  cells->reduce(nullptr, &mine);
+  count_outside();
 
   for (int c = 0; c < size_array_rows; c++) {
     double *row = array[c];
@@ -115,5 +144,89 @@ void ComputeCellProps::compute_array()
     row[FLUIDVOL] = cells->fluid_volume(c);
     row[SPHTURGOR] = cells->sph_turgor(c);
     row[WALLTURGOR] = cells->has_wall_load() ? cells->wall_turgor(c) : 0.0;
+    row[OUTSIDE] = outside[c];
+    // fluid-free volume between fluid and wall: V - sum m/rho
+    row[GAPVOL] = row[VOLUME] - row[FLUIDVOL];
   }
+}
+
+/* ----------------------------------------------------------------------
+   the number of each cell's fluid atoms outside its wall: winding number < 1/2 about the atom
+   (unwrapped as the wall triangles) of the cell's triangles, gathered from all ranks. Exact
+   shortcuts: outside the ball around the corners' centroid o that holds every corner the winding
+   number is 0; inside the ball around o that touches no triangle plane it is that of o.
+------------------------------------------------------------------------- */
+
+void ComputeCellProps::count_outside()
+{
+  const int n = size_array_rows;
+  const int nmine = (int) mine.size();
+  counts.resize(comm->nprocs);
+  displs.assign(comm->nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  all.resize(displs.back() + counts.back());
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+
+  // triangles grouped by cell: those of cell c are first[c] to first[c + 1] - 1
+  const int ntri = (int) all.size() / 10;
+  first.assign(n + 1, 0);
+  for (int t = 0; t < ntri; t++) first[(int) all[10 * t] + 1]++;
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<int> slot(first.begin(), first.end() - 1);
+  tri.resize(9 * (size_t) ntri);
+  for (int t = 0; t < ntri; t++)
+    std::copy_n(&all[10 * t + 1], 9, &tri[9 * (size_t) slot[(int) all[10 * t]]++]);
+
+  // per cell: o, squared radius of the ball holding every corner, of the ball touching no
+  // triangle plane, winding number at o
+  centre.assign(6 * n, 0.0);
+  for (int c = 0; c < n; c++) {
+    double *o = &centre[6 * c];
+    const double *ct = &tri[9 * (size_t) first[c]];
+    const int nt = first[c + 1] - first[c];
+    for (int k = 0; k < 9 * nt; k++) o[k % 3] += ct[k] / (3.0 * nt);
+    double rout2 = 0.0, rin2 = INFINITY;
+    for (int t = 0; t < nt; t++) {
+      const double *a = ct + 9 * t, *b = a + 3, *cc = a + 6;
+      for (const double *v : {a, b, cc}) {
+        const double dx = v[0] - o[0], dy = v[1] - o[1], dz = v[2] - o[2];
+        rout2 = std::max(rout2, dx * dx + dy * dy + dz * dz);
+      }
+      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const double w[3] = {cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]};
+      const double nx = u[1] * w[2] - u[2] * w[1], ny = u[2] * w[0] - u[0] * w[2],
+                   nz = u[0] * w[1] - u[1] * w[0];
+      const double nn = nx * nx + ny * ny + nz * nz;
+      // squared distance of o from the triangle's plane: (n . (a - o))^2 / |n|^2
+      const double h = nx * (a[0] - o[0]) + ny * (a[1] - o[1]) + nz * (a[2] - o[2]);
+      if (nn > 0.0) rin2 = std::min(rin2, h * h / nn);
+    }
+    o[3] = rout2;
+    o[4] = rin2;
+    o[5] = nt > 0 ? winding_number(ct, nt, o) : 0.0;
+  }
+
+  std::vector<double> count(n, 0.0);
+  const std::vector<int> &cellof = cells->cell_of_atom();
+  double xu[3];
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int c = cellof[i];
+    if (c < 0 || atom->type[i] != fluidtype) continue;
+    const double *o = &centre[6 * c];
+    const double *ref = cells->reference(c);
+    domain->unmap(atom->x[i], atom->image[i], xu);
+    for (int d = 0; d < 3; d++) xu[d] -= ref[d];
+    const double dx = xu[0] - o[0], dy = xu[1] - o[1], dz = xu[2] - o[2];
+    const double r2 = dx * dx + dy * dy + dz * dz;
+    double w = 0.0;
+    if (r2 < o[4])
+      w = o[5];
+    else if (r2 <= o[3])
+      w = winding_number(&tri[9 * (size_t) first[c]], first[c + 1] - first[c], xu);
+    if (w < 0.5) count[c] += 1.0;
+  }
+  outside.resize(n);
+  MPI_Allreduce(count.data(), outside.data(), n, MPI_DOUBLE, MPI_SUM, world);
 }

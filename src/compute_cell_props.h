@@ -40,12 +40,19 @@ class ComputeCellProps : public Compute {
     FLUIDVOL,
     SPHTURGOR,
     WALLTURGOR,
+    OUTSIDE,
+    GAPVOL,
     NCOLUMN
   };
 
  private:
   std::unique_ptr<CellReduce> cells;
   std::vector<FixCellTurgor *> turgor;
+  int fluidtype;
+  std::vector<double> mine, all, tri, centre, outside;    // wall triangles, per-cell results
+  std::vector<int> counts, displs, first;
+
+  void count_outside();
 };
 
 }    // namespace LAMMPS_NS
