@@ -354,6 +354,34 @@ double FixCellTurgor::compute_vector(int n)
   return values[n];
 }
 
+/* ----------------------------------------------------------------------
+   fix_modify ID LP|psi|accel value: change the water transfer between runs; the per-cell state
+   (M0, pi0, the running offset D, warnings) and the outputs carry on
+------------------------------------------------------------------------- */
+
+int FixCellTurgor::modify_param(int narg, char **arg)
+{
+  const std::string key = arg[0];
+  if (key != "LP" && key != "psi" && key != "accel")
+    error->all(FLERR,
+               "Fix_modify cell/turgor: unknown keyword '{}' (expected LP, psi or accel, or a "
+               "keyword of every fix)",
+               key);
+  if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
+  const double value = utils::numeric(FLERR, arg[1], false, lmp);
+  if (key == "LP") {
+    if (value < 0.0)
+      error->all(FLERR, "Fix_modify cell/turgor: wall permeability LP = {} must be >= 0", value);
+    lp = value;
+  } else if (key == "psi") {
+    psi = value;
+  } else {
+    if (value <= 0.0) error->all(FLERR, "Fix_modify cell/turgor: accel = {} must be > 0", value);
+    accel = value;
+  }
+  return 2;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void FixCellTurgor::write_restart(FILE *fp)

@@ -26,6 +26,7 @@ class FixCellTurgor : public Fix {
   void setup(int) override;
   void end_of_step() override;
   double compute_vector(int) override;
+  int modify_param(int, char **) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
