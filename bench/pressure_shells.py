@@ -1,14 +1,28 @@
-# Radial pressure shells one particle spacing wide of a profile dump (id type r P):
-#   python3 pressure_shells.py profile.txt DX
-import sys, statistics as st
-f=sys.argv[1]; dx=float(sys.argv[2])
-rows=[l.split() for l in open(f).readlines()[9:]]
-fl=[(float(r[2]),float(r[3])) for r in rows if r[1]=='1']
-rw=st.mean(float(r[2]) for r in rows if r[1]=='2')
-P=[p for _,p in fl]; mean=st.mean(P)
-print(f"fluid {len(fl)}, wall radius {rw*1e6:.2f} um, mean P {mean/1e3:.1f} kPa, std/mean {st.pstdev(P)/mean*100:.1f} %")
-nsh=int(rw/dx)+1
-for s in range(nsh):
-    lo=rw-(s+1)*dx; hi=rw-s*dx
-    ps=[p for r,p in fl if lo<=r<hi]
-    if ps: print(f"  shell {max(lo,0)*1e6:6.1f}-{hi*1e6:6.1f} um: n={len(ps):4d} P={st.mean(ps)/1e3:7.1f} kPa ({(st.mean(ps)/mean-1)*100:+.1f} %) std/mean {st.pstdev(ps)/st.mean(ps)*100:.1f} %")
+# Radial pressure shells of a sealed cell from a profile dump (columns id type r P, r from the wall
+# centre), each one particle spacing wide, dx = (4/3 pi R^3 / N_fluid)^(1/3) with R the mean wall
+# radius, counted inwards from R; prints the shells and one summary line:
+#   python3 pressure_shells.py profile.txt [label]
+# SHELLS label: n, mean P, std/mean over all fluid, largest |shell mean / mean - 1| (shells with
+# at least 10 atoms), first shell (next to the wall) / mean - 1
+import math, statistics as st, sys
+rows = [l.split() for l in open(sys.argv[1]).readlines()[9:]]
+label = sys.argv[2] if len(sys.argv) > 2 else ""
+fl = [(float(r[2]), float(r[3])) for r in rows if r[1] == '1']
+rw = st.mean(float(r[2]) for r in rows if r[1] == '2')
+dx = (4.0 / 3.0 * math.pi * rw**3 / len(fl)) ** (1.0 / 3.0)
+P = [p for _, p in fl]
+mean = st.mean(P)
+print(f"fluid {len(fl)}, wall radius {rw*1e6:.2f} um, spacing {dx*1e6:.2f} um, mean P {mean/1e3:.1f} kPa, std/mean {st.pstdev(P)/mean*100:.1f} %")
+worst, first = 0.0, None
+for s in range(int(rw / dx) + 1):
+    lo, hi = rw - (s + 1) * dx, rw - s * dx
+    ps = [p for r, p in fl if lo <= r < hi]
+    if not ps:
+        continue
+    dev = st.mean(ps) / mean - 1
+    if first is None:
+        first = dev
+    if len(ps) >= 10:
+        worst = max(worst, abs(dev))
+    print(f"  shell {max(lo,0)*1e6:6.1f}-{hi*1e6:6.1f} um: n={len(ps):5d} P={st.mean(ps)/1e3:7.1f} kPa ({dev*100:+.1f} %) std/mean {st.pstdev(ps)/st.mean(ps)*100:.1f} %")
+print(f"SHELLS {label}: n {len(fl)}, mean P {mean/1e3:.1f} kPa, std/mean {st.pstdev(P)/mean*100:.1f} %, worst shell {worst*100:.1f} %, wall shell {first*100:+.1f} %")

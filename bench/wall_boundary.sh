@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# The SPH wall boundary against the old wall-fluid model on the seed-resolution sealed cell
-# (1092 wall, 1647 fluid, 1.35 x water, 0.4 ms, 2 ranks): the final summary line of each run and
-# the radial pressure shells, one particle spacing (9.6 um) wide. About 1 minute.
+# The SPH wall boundary (pair_coeff 1 2 cell/sph wall) against the wall-fluid particle model
+# (pair cell/wall wallfluid): sealed cells given more water relax at rest, then the radial pressure
+# shells (bench/pressure_shells.py) and the mean SPH pressure against the wall load and the
+# Neo-Hookean membrane law. h and the time step scale with the fluid spacing DX (h = 1.27 DX, the
+# seed's 12.2 um at 9.6 um). On 2 ranks:
+#   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
+#   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
+#   C. boundary at 1.35 x water, coarse (312 wall, 459 fluid) and fine (2562 wall, 3871 fluid)
+# About 25 minutes on 2 free cores; `bench/wall_boundary.sh A` runs one part.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -9,14 +15,37 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 export LAMMPS_POTENTIALS=$here/../potentials
-run() {    # name bnd gap r0
-  mkdir -p "$work/$1" && cd "$work/$1"
-  "$build/tools/cellgen/cellgen" --gap "$3" --wall-mass 1e-12 --out cell.data >/dev/null
-  mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$2" -var gap "$3" \
-    -var r0 "$4" -log log.lammps | grep RESULT
-  python3 "$here/pressure_shells.py" "profile_$2.txt" 9.6e-6
+parts=${1:-ABC}
+run() {    # name bnd f nwall nfluid [cellgen options]
+  local name=$1 bnd=$2 f=$3 nwall=$4 nfluid=$5
+  shift 5
+  mkdir -p "$work/$name" && cd "$work/$name"
+  local line dx gap
+  line=$("$build/tools/cellgen/cellgen" --nwall "$nwall" --nfluid "$nfluid" --wall-mass 1e-12 "$@" \
+    --out cell.data | head -1)
+  dx=$(sed -E 's/.*DX = ([0-9.e+-]+) m.*/\1/' <<<"$line")
+  gap=$(sed -E 's/.*gap = ([0-9.e+-]+) m.*/\1/' <<<"$line")
+  local h dt
+  h=$(python3 -c "print(12.2e-6*$dx/9.59755e-6)")
+  dt=$(python3 -c "print(1e-8*$dx/9.59755e-6)")
+  local t0=$SECONDS
+  mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
+    -var h "$h" -var dt "$dt" -var gap "$gap" -log log.lammps | grep RESULT
+  python3 "$here/pressure_shells.py" profile.txt "$name" | tail -1
+  echo "  ($((SECONDS - t0)) s, DX $dx, gap $gap)"
 }
-echo "== without the boundary: gap = r0 = 11 um (apple.cellsph wallfluid)"
-run old 0 11e-6 11e-6
-echo "== with the boundary: cellgen gap dx/2, repulsion backstop r0 = 7 um"
-run boundary 1 4.79885e-6 7e-6
+if [[ $parts == *A* ]]; then
+  echo "== A. seed resolution, 1.35 x water"
+  run old 0 1.35 1091 1624 --gap 11e-6
+  run boundary 1 1.35 1091 1624
+fi
+if [[ $parts == *B* ]]; then
+  echo "== B. seed resolution, boundary, stretch about 1.02 and 1.30"
+  run boundary-1.06 1 1.06 1091 1624
+  run boundary-2.2 1 2.2 1091 1624
+fi
+if [[ $parts == *C* ]]; then
+  echo "== C. boundary, 1.35 x water, coarse and fine"
+  run coarse 1 1.35 300 450
+  run fine 1 1.35 2562 3900
+fi

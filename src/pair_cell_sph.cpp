@@ -13,6 +13,7 @@
 #include "atom.h"
 #include "cell_compat.h"
 #include "cell_params.h"
+#include "cell_triangle.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -32,22 +33,26 @@ static const int RESTART_VERSION = 2;    // 2: per type pair, whether it is a wa
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
 
+// wall boundary: the triangles one wall atom keeps (it is their middle angle atom), at most
+static const int MAXTRI = 8;
+// contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
+static const double CONTACT_H = 2.5;
+
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), rho0(nullptr),
     bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr), invrho0(nullptr),
     eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1),
-    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), wallarea(nullptr), deficit(nullptr),
-    wallload(nullptr), nwallpairs(0), maxwallpairs(0), wallfluid(nullptr), wallatom(nullptr),
-    wallgrad(nullptr), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
-    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairmu(nullptr), maxfirst(0),
-    maxpairs(0)
+    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), wallload(nullptr),
+    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), commode(COMM_DENSITY),
+    restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
+    pairj(nullptr), pairdw(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   writedata = 1;
   reinitflag = 0;
-  comm_forward = 3;    // rho, pressure; or the wall area vectors
+  comm_forward = 3;    // rho, pressure; or the wall area vectors; (with walls) triangle tags
   comm_reverse = 3;    // rho and the kernel deficit; or the wall area vectors or wall load
 }
 
@@ -61,12 +66,10 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairj);
   memory->destroy(pairdw);
   memory->destroy(pairmu);
-  memory->destroy(wallarea);
   memory->destroy(deficit);
   memory->destroy(wallload);
-  memory->destroy(wallfluid);
-  memory->destroy(wallatom);
-  memory->destroy(wallgrad);
+  memory->destroy(tricount);
+  memory->destroy(trifirst);
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(setflag);
@@ -89,17 +92,21 @@ void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
+  bool grown = false;
   if (atom->nmax > nmax || (walls && !deficit)) {
+    grown = true;
     nmax = atom->nmax;
     memory->destroy(prho2);
     memory->destroy(rhoinv);
     memory->create(prho2, nmax, "pair:prho2");
     memory->create(rhoinv, nmax, "pair:rhoinv");
     if (walls) {
-      memory->destroy(wallarea);
       memory->destroy(deficit);
       memory->destroy(wallload);
-      memory->create(wallarea, nmax, 3, "pair:wallarea");
+      memory->destroy(tricount);
+      memory->destroy(trifirst);
+      memory->create(tricount, nmax, "pair:tricount");
+      memory->create(trifirst, nmax, "pair:trifirst");
       memory->create(deficit, nmax, "pair:deficit");
       memory->create(wallload, nmax, 3, "pair:wallload");
     }
@@ -128,7 +135,9 @@ void PairCellSPH::compute(int eflag, int vflag)
       {&PairCellSPH::sum_forces<0, 0>, &PairCellSPH::sum_forces<0, 1>},
       {&PairCellSPH::sum_forces<1, 0>, &PairCellSPH::sum_forces<1, 1>}};
 
-  if (walls) wall_areas();
+  if (walls) {
+    if (neighbor->ago == 0 || grown) wall_triangles();
+  }
   (this->*DENSITY[walls][viscous][kernel])();
   commode = COMM_DENSITY;
   if (force->newton_pair) CellCompat::reverse_comm(comm, this);
@@ -143,6 +152,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     if (fluid[type[i]]) {
       rhoinv[i] = 1.0 / rho[i];
       prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i];
+      if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
     }
 
   (this->*FORCES[viscous][evflag ? 1 : 0])();
@@ -195,8 +205,12 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
   }
   if (WALLS) {
     const int nall = nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) deficit[i] = 0.0;
-    nwallpairs = 0;
+    for (int i = 0; i < nall; i++) {
+      deficit[i] = 0.0;
+      wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
+    }
+    terms.clear();
+    contacts.clear();
   }
 
   int npairs = 0;
@@ -226,27 +240,10 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
       if (rsq >= p.cutsq) continue;
       if (WALLS && p.boundary) {
         if (molecule[i] != molecule[j]) continue;
-        // r = x_w - x_f from the fluid atom f to the wall atom w of its own cell
+        // the triangles kept by wall atom b of the fluid atom f's own cell
         const bool ifluid = fluid[type[i]];
-        const int f = ifluid ? i : j;
-        const int w = ifluid ? j : i;
-        const double sign = ifluid ? -1.0 : 1.0;
-        const double rx = sign * delx, ry = sign * dely, rz = sign * delz;
-        const double r = sqrt(rsq);
-        const double *sw = wallarea[w];
-        const double rs = rx * sw[0] + ry * sw[1] + rz * sw[2];
-        const double psi = phi_beyond(r * p.scale.invh) / (4.0 * M_PI * rsq * r);
-        // 1 - gamma_f = sum_w Phi(r) (r . s_w) / (4 pi r^3): the kernel outside the cell
-        if (newton_pair || f < nlocal) deficit[f] += psi * rs;
-        // grad_f gamma_f = sum_w psi s_w - (W + 3 psi) (r . s_w) r / r^2
-        const double c = (CellKernel::W<KERNEL>(p.scale, r) + 3.0 * psi) * rs / rsq;
-        if (nwallpairs == maxwallpairs) grow_wallpairs(nwallpairs + 1);
-        wallfluid[nwallpairs] = f;
-        wallatom[nwallpairs] = w;
-        double *g = &wallgrad[3 * nwallpairs++];
-        g[0] = psi * sw[0] - c * rx;
-        g[1] = psi * sw[1] - c * ry;
-        g[2] = psi * sw[2] - c * rz;
+        // no triangle kept by b has its centroid inside the support: |g - r_b| <= 2/3 edge
+        if (rsq < p.reachsq) boundary_terms(ifluid ? i : j, ifluid ? j : i, p);
         continue;
       }
 
@@ -278,46 +275,45 @@ void PairCellSPH::grow_pairs(int n)
   memory->grow(pairmu, maxpairs, "pair:pairmu");
 }
 
-void PairCellSPH::grow_wallpairs(int n)
-{
-  maxwallpairs = n + n / 2 + 64;
-  memory->grow(wallfluid, maxwallpairs, "pair:wallfluid");
-  memory->grow(wallatom, maxwallpairs, "pair:wallatom");
-  memory->grow(wallgrad, 3 * maxwallpairs, "pair:wallgrad");
-}
-
 /* ----------------------------------------------------------------------
-   s_w of every wall atom, owned and ghost: one third of the outward area vector
-   (1/2) (x_b - x_a) x (x_c - x_a) of each of its triangles (the angles of the wall)
+   the terms of fluid atom f with the triangles (a, b, c) kept by wall atom b of its own cell:
+   kernel deficit, its gradient, and the contact with the wall surface
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::wall_areas()
+void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
 {
   double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const int newton_bond = force->newton_bond;
-  for (int i = 0; i < nall; i++) wallarea[i][0] = wallarea[i][1] = wallarea[i][2] = 0.0;
-
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    const double e1[3] = {x[b][0] - x[a][0], x[b][1] - x[a][1], x[b][2] - x[a][2]};
-    const double e2[3] = {x[c][0] - x[a][0], x[c][1] - x[a][1], x[c][2] - x[a][2]};
-    // s = (1/3) (1/2) e1 x e2 to each vertex
-    const double sx = (e1[1] * e2[2] - e1[2] * e2[1]) / 6.0;
-    const double sy = (e1[2] * e2[0] - e1[0] * e2[2]) / 6.0;
-    const double sz = (e1[0] * e2[1] - e1[1] * e2[0]) / 6.0;
-    for (int v : {a, b, c})
-      if (newton_bond || v < nlocal) {
-        wallarea[v][0] += sx;
-        wallarea[v][1] += sy;
-        wallarea[v][2] += sz;
-      }
+  const double *xf = x[f];
+  const double support = CellKernel::support(kernel);
+  for (int t = trifirst[b]; t < trifirst[b] + tricount[b]; t++) {
+    const int a = trivert[2 * t], c = trivert[2 * t + 1];
+    // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
+    if (a < 0 || c < 0) continue;
+    const double ra[3] = {x[a][0] - xf[0], x[a][1] - xf[1], x[a][2] - xf[2]};
+    const double rb[3] = {x[b][0] - xf[0], x[b][1] - xf[1], x[b][2] - xf[2]};
+    const double rc[3] = {x[c][0] - xf[0], x[c][1] - xf[1], x[c][2] - xf[2]};
+    const double g[3] = {(ra[0] + rb[0] + rc[0]) / 3.0, (ra[1] + rb[1] + rc[1]) / 3.0,
+                         (ra[2] + rb[2] + rc[2]) / 3.0};
+    const double gl = sqrt(CellTriangle::dot(g, g));
+    const double q = gl * p.scale.invh;
+    if (q >= support) continue;
+    double ph, dph;
+    phi_beyond(q, ph, dph);
+    // D_T = Phi(|g|/h) Omega_T / (4 pi), Omega_T the solid angle of T seen from f (exact: a point
+    // formula (g . S_T)/|g|^3 would err by 1e-3 in gamma, 2 % in pressure); 1 - gamma_f = sum_T D_T
+    double omega, dom[3][3];
+    CellTriangle::solid_angle(ra, rb, rc, omega, dom);
+    deficit[f] += ph * omega / (4.0 * M_PI);
+    // dD_T/dx_v = Phi'(q) Omega g / (12 pi h |g|) + Phi / (4 pi) dOmega/dx_v (d|g|/dx_v = g / 3|g|),
+    // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
+    const double cg = dph * omega * p.scale.invh / (12.0 * M_PI * gl);
+    const double co = ph / (4.0 * M_PI);
+    Term tm{f, {a, b, c}, {}};
+    for (int v = 0; v < 3; v++)
+      for (int d = 0; d < 3; d++) tm.dv[v][d] = cg * g[d] + co * dom[v][d];
+    terms.push_back(tm);
+    if (gl < p.reach + edgemax) contact(f, a, b, c, p);
   }
-  commode = COMM_AREA;
-  if (newton_bond) CellCompat::reverse_comm(comm, this);
-  CellCompat::forward_comm(comm, this);
 }
 
 /* ----------------------------------------------------------------------
@@ -331,35 +327,165 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
   double **f = atom->f;
   const double *rmass = atom->rmass;
   const double *rho = atom->dvector[irho];
+
+  for (const Term &tm : terms) {
+    const int i = tm.f;
+    // F = -grad E of E = sum m e(rho), rho = sum m W / gamma: C_f dgamma_f/dx, C_f = m P / (rho gamma)
+    // on the fluid atom and the vertices (0 where gamma is at its floor)
+    if (1.0 - deficit[i] < gamma_min) continue;
+    const double c = rmass[i] * prho2[i] * rho[i];
+    double fi[3] = {0.0, 0.0, 0.0}, fv[3][3];
+    for (int v = 0; v < 3; v++)
+      for (int d = 0; d < 3; d++) {
+        fv[v][d] = -c * tm.dv[v][d];
+        fi[d] -= fv[v][d];
+        f[tm.v[v]][d] += fv[v][d];
+        wallload[tm.v[v]][d] += fv[v][d];
+      }
+    f[i][0] += fi[0];
+    f[i][1] += fi[1];
+    f[i][2] += fi[2];
+    if (EVFLAG && vflag_either) {
+      double dic[3], dac[3], dbc[3];
+      for (int d = 0; d < 3; d++) {
+        dic[d] = x[i][d] - x[tm.v[2]][d];
+        dac[d] = x[tm.v[0]][d] - x[tm.v[2]][d];
+        dbc[d] = x[tm.v[1]][d] - x[tm.v[2]][d];
+      }
+      v_tally4(i, tm.v[0], tm.v[1], tm.v[2], fi, fv[0], fv[1], dic, dac, dbc);
+    }
+  }
+
+  // contacts with the wall surface: F on the fluid atom, -lambda_v F on vertex v (newton on)
+  for (const Contact &ct : contacts) {
+    double fv[3][3];
+    for (int d = 0; d < 3; d++) {
+      f[ct.f][d] += ct.force[d];
+      for (int k = 0; k < 3; k++) {
+        fv[k][d] = -ct.lambda[k] * ct.force[d];
+        f[ct.v[k]][d] += fv[k][d];
+        wallload[ct.v[k]][d] += fv[k][d];
+      }
+    }
+    if (EVFLAG) {
+      if (eflag_global) eng_vdwl += ct.energy;
+      if (eflag_atom) eatom[ct.f] += ct.energy;
+      if (vflag_either) {
+        // virial about vertex c: sum over f, a, b of (x - x_c) F
+        const int c = ct.v[2];
+        double force[3] = {ct.force[0], ct.force[1], ct.force[2]};
+        double dfc[3], dac[3], dbc[3];
+        for (int d = 0; d < 3; d++) {
+          dfc[d] = x[ct.f][d] - x[c][d];
+          dac[d] = x[ct.v[0]][d] - x[c][d];
+          dbc[d] = x[ct.v[1]][d] - x[c][d];
+        }
+        v_tally4(ct.f, ct.v[0], ct.v[1], c, force, fv[0], fv[1], dfc, dac, dbc);
+      }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   contact of fluid atom f with the triangles kept by wall atom w (its own cell's wall):
+   F = F_c (1 - d/delta)^2 e from the closest point p at distance d < delta, e = (x_f - p)/d,
+   energy F_c delta (1 - d/delta)^3 / 3, so that F = -grad E for the atom and the vertices
+------------------------------------------------------------------------- */
+
+void PairCellSPH::contact(int f, int a, int b, int c, const PairConst &p)
+{
+  double **x = atom->x;
+  const CellTriangle::Foot ft = CellTriangle::closest(x[f], x[a], x[b], x[c]);
+  const double e[3] = {x[f][0] - ft.p[0], x[f][1] - ft.p[1], x[f][2] - ft.p[2]};
+  const double d = sqrt(CellTriangle::dot(e, e));
+  if (d >= p.reach) return;
+  if (d == 0.0)
+    error->one(FLERR,
+               "Pair cell/sph: fluid atom {} (cell {}) lies on its wall on step {}: the contact "
+               "force has no direction; the run went unstable",
+               atom->tag[f], atom->molecule[f], update->ntimestep);
+  const double s = 1.0 - d / p.reach;
+  const double fd = p.fcontact * s * s / d;
+  // F = F_c (1 - d/delta)^2 (x_f - p) / d
+  contacts.push_back(Contact{f,
+                             {a, b, c},
+                             {fd * e[0], fd * e[1], fd * e[2]},
+                             {ft.l[0], ft.l[1], ft.l[2]},
+                             p.fcontact * p.reach * s * s * s / 3.0});
+}
+
+/* ----------------------------------------------------------------------
+   longest edge b-a, b-c of the wall triangles now, over the angles of owned atoms whose other
+   atoms this rank has (all at the start; enough to measure the wall)
+------------------------------------------------------------------------- */
+
+double PairCellSPH::longest_edge() const
+{
+  double **x = atom->x;
+  double edge = 0.0, all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < atom->num_angle[i]; m++)
+      for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
+        const int k = atom->map(tag);
+        if (k < 0 || atom->angle_atom2[i][m] != atom->tag[i]) continue;
+        double del[3] = {x[k][0] - x[i][0], x[k][1] - x[i][1], x[k][2] - x[i][2]};
+        domain->minimum_image(del);
+        edge = std::max(edge, CellTriangle::dot(del, del));
+      }
+  MPI_Allreduce(&edge, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return sqrt(all);
+}
+
+/* ----------------------------------------------------------------------
+   the triangles each wall atom keeps (it is the middle atom b of the angle a b c), as local
+   indices of a and c: owned atoms from their angles, ghosts from the tags their owners send,
+   each vertex the image closest to b
+------------------------------------------------------------------------- */
+
+void PairCellSPH::wall_triangles()
+{
+  double **x = atom->x;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  const int newton_pair = force->newton_pair;
-  for (int i = 0; i < nall; i++) wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
-
-  for (int k = 0; k < nwallpairs; k++) {
-    const int i = wallfluid[k];
-    const int w = wallatom[k];
-    const double *g = &wallgrad[3 * k];
-    // F_f = 2 m_f (P_f / rho_f) grad_f gamma_f
-    const double c = 2.0 * rmass[i] * prho2[i] * rho[i];
-    const double fx = c * g[0], fy = c * g[1], fz = c * g[2];
-    if (newton_pair || i < nlocal) {
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
+  double edge = 0.0;
+  trivert.clear();
+  tritag.clear();
+  for (int i = 0; i < nlocal; i++) {
+    tricount[i] = 0;
+    trifirst[i] = static_cast<int>(trivert.size()) / 2;
+    for (int m = 0; m < atom->num_angle[i]; m++) {
+      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
+      if (tricount[i] == MAXTRI)
+        error->one(FLERR,
+                   "Pair cell/sph: wall atom {} is the middle atom of more than {} wall "
+                   "triangles (angles); the wall boundary supports at most {}",
+                   atom->tag[i], MAXTRI, MAXTRI);
+      for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
+        const int k = atom->map(tag);
+        const int v = k < 0 ? -1 : domain->closest_image(i, k);
+        if (v >= 0) {
+          const double del[3] = {x[v][0] - x[i][0], x[v][1] - x[i][1], x[v][2] - x[i][2]};
+          edge = std::max(edge, CellTriangle::dot(del, del));
+        }
+        trivert.push_back(v);
+        tritag.push_back(tag);
+      }
+      tricount[i]++;
     }
-    if (newton_pair || w < nlocal) {
-      f[w][0] -= fx;
-      f[w][1] -= fy;
-      f[w][2] -= fz;
-      wallload[w][0] -= fx;
-      wallload[w][1] -= fy;
-      wallload[w][2] -= fz;
-    }
-    if (EVFLAG)
-      ev_tally_xyz(i, w, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, x[i][0] - x[w][0],
-                   x[i][1] - x[w][1], x[i][2] - x[w][2]);
   }
+  // longest edge b-a, b-c until the next reneighbouring: now + the skin (each end moves < skin/2)
+  edge = sqrt(edge);
+  MPI_Allreduce(&edge, &edgemax, 1, MPI_DOUBLE, MPI_MAX, world);
+  edgemax += neighbor->skin;
+  if (edgemax > edgecap)
+    error->all(FLERR,
+               "Pair cell/sph: a wall edge grew to {:.4g} m on step {}, beyond the {:.4g} m the "
+               "wall boundary's neighbour range allows in this run (1.5 x the longest edge at the "
+               "run's start): split the run (each run command measures the wall again)",
+               edgemax - neighbor->skin, update->ntimestep, edgecap - neighbor->skin);
+  for (int i = nlocal; i < nall; i++) tricount[i] = 0;
+  commode = COMM_TRIANGLES;
+  CellCompat::forward_comm(comm, this);
 }
 
 /* ----------------------------------------------------------------------
@@ -388,15 +514,20 @@ void PairCellSPH::tabulate_phi()
 
 /* ---------------------------------------------------------------------- */
 
-double PairCellSPH::phi_beyond(double q) const
+void PairCellSPH::phi_beyond(double q, double &value, double &slope) const
 {
   const int k = static_cast<int>(q / phidq);
-  if (k >= static_cast<int>(phi.size()) - 1) return 0.0;
+  if (k >= static_cast<int>(phi.size()) - 1) {
+    value = slope = 0.0;
+    return;
+  }
   const double t = q / phidq - k;
   const double t2 = t * t, t3 = t2 * t;
-  // cubic Hermite between the table points k and k + 1
-  return (2.0 * t3 - 3.0 * t2 + 1.0) * phi[k] + (t3 - 2.0 * t2 + t) * phidq * dphi[k] +
+  // cubic Hermite between the table points k and k + 1, and its derivative in q
+  value = (2.0 * t3 - 3.0 * t2 + 1.0) * phi[k] + (t3 - 2.0 * t2 + t) * phidq * dphi[k] +
       (3.0 * t2 - 2.0 * t3) * phi[k + 1] + (t3 - t2) * phidq * dphi[k + 1];
+  slope = (6.0 * t2 - 6.0 * t) * (phi[k] - phi[k + 1]) / phidq +
+      (3.0 * t2 - 4.0 * t + 1.0) * dphi[k] + (3.0 * t2 - 2.0 * t) * dphi[k + 1];
 }
 
 /* ----------------------------------------------------------------------
@@ -438,7 +569,8 @@ void PairCellSPH::apply_eos()
     const int t = type[i];
     if (!fluid[t]) continue;
     // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
-    if (walls) rho[i] /= std::max(1.0 - deficit[i], gamma_min);
+    const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    rho[i] /= gamma;
     const double x = rho[i] * invrho0[t];
     double e = 0.0;
     if (eos == TAIT) {
@@ -454,7 +586,8 @@ void PairCellSPH::apply_eos()
     }
     if (!(x > 0.0 && x <= 2.0) || !std::isfinite(pressure[i])) unstable(i);
     rhoinv[i] = 1.0 / rho[i];
-    prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i];
+    // P / (rho^2 gamma): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2 without walls)
+    prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / gamma;
     if (eflag_global) eng_vdwl += rmass[i] * e;
     if (eflag_atom) eatom[i] += rmass[i] * e;
   }
@@ -544,7 +677,7 @@ void PairCellSPH::allocate()
       setflag[i][j] = 0;
       rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
       boundary[i][j] = 0;
-      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0};
+      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0, 0.0};
     }
     wself[i] = invrho0[i] = eosk[i] = 0.0;
     fluid[i] = 0;
@@ -710,7 +843,15 @@ void PairCellSPH::init_style()
       error->all(FLERR,
                  "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs the wall "
                  "triangles as angles: define an angle style (angle_style zero)");
+    if (!force->newton_pair)
+      error->all(FLERR,
+                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs newton pair on "
+                 "(the wall's reactions go to ghost atoms)");
+    if (!atom->num_angle)
+      error->all(FLERR, "Pair cell/sph: the wall boundary needs an atom style with angles");
     tabulate_phi();
+    comm_forward = std::max(3, 1 + 2 * MAXTRI);
+    edgecap = 1.5 * longest_edge() + neighbor->skin;
   }
   writedata = all_set ? 1 : 0;
   if (viscous && !comm->ghost_velocity)
@@ -739,7 +880,7 @@ void PairCellSPH::init_style()
 double PairCellSPH::init_one(int i, int j)
 {
   if (!setflag[i][j]) {
-    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0};
+    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0, 0.0};
     return 0.0;
   }
   if (boundary[i][j]) {
@@ -750,9 +891,17 @@ double PairCellSPH::init_one(int i, int j)
                  "cell/sph) and one wall type (without)",
                  i, j);
     const double support = CellKernel::support(kernel) * h[f][f];
-    pc[i][j] = PairConst{support * support, CellKernel::scale(kernel, 3, h[f][f]), 0.0, 1};
+    // contact range delta = h / 5 and force F_c = K delta^2 at the surface (doc/pair_cell_sph.md)
+    const double reach = h[f][f] / CONTACT_H;
+    // the neighbour range reaches every triangle whose centroid is inside the kernel support
+    const double range = support + edgecap;
+    const double near = support + 2.0 / 3.0 * (edgecap - neighbor->skin) + neighbor->skin;
+    pc[i][j] = PairConst{range * range, CellKernel::scale(kernel, 3, h[f][f]),
+                         0.0,           1,
+                         reach,         bulk[f][f] * reach * reach,
+                         near * near};
     pc[j][i] = pc[i][j];
-    return cut_global > 0.0 ? std::max(cut_global, support) : support;
+    return cut_global > 0.0 ? std::max(cut_global, range) : range;
   }
   for (int t : {i, j}) {
     if (!setflag[t][t])
@@ -947,9 +1096,13 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_AREA) {
-    for (int k = 0; k < n; k++)
-      for (int d = 0; d < 3; d++) buf[m++] = wallarea[list[k]][d];
+  if (commode == COMM_TRIANGLES) {
+    for (int k = 0; k < n; k++) {
+      const int i = list[k];
+      buf[m++] = tricount[i];
+      for (int v = 2 * trifirst[i]; v < 2 * (trifirst[i] + tricount[i]); v++)
+        buf[m++] = ubuf(tritag[v]).d;
+    }
     return m;
   }
   const double *rho = atom->dvector[irho];
@@ -957,6 +1110,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
   for (int k = 0; k < n; k++) {
     buf[m++] = rho[list[k]];
     buf[m++] = pressure[list[k]];
+    if (walls) buf[m++] = deficit[list[k]];
   }
   return m;
 }
@@ -966,9 +1120,17 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_AREA) {
-    for (int i = first; i < first + n; i++)
-      for (int d = 0; d < 3; d++) wallarea[i][d] = buf[m++];
+  if (commode == COMM_TRIANGLES) {
+    for (int i = first; i < first + n; i++) {
+      tricount[i] = static_cast<int>(buf[m++]);
+      trifirst[i] = static_cast<int>(trivert.size()) / 2;
+      for (int v = 0; v < 2 * tricount[i]; v++) {
+        const tagint tag = static_cast<tagint>(ubuf(buf[m++]).i);
+        const int k = atom->map(tag);
+        trivert.push_back(k < 0 ? -1 : domain->closest_image(i, k));
+        tritag.push_back(tag);
+      }
+    }
     return;
   }
   double *rho = atom->dvector[irho];
@@ -976,6 +1138,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     rho[i] = buf[m++];
     pressure[i] = buf[m++];
+    if (walls) deficit[i] = buf[m++];
   }
 }
 
@@ -994,9 +1157,8 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
     }
     return m;
   }
-  double **v = commode == COMM_AREA ? wallarea : wallload;
   for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
+    for (int d = 0; d < 3; d++) buf[m++] = wallload[i][d];
   return m;
 }
 
@@ -1013,9 +1175,8 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
     }
     return;
   }
-  double **v = commode == COMM_AREA ? wallarea : wallload;
   for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) v[list[k]][d] += buf[m++];
+    for (int d = 0; d < 3; d++) wallload[list[k]][d] += buf[m++];
 }
 
 /* ----------------------------------------------------------------------

@@ -53,6 +53,10 @@ class PairCellSPH : public Pair {
     CellKernel::Scale scale;    // kernel constants at this pair's h (the fluid's for a boundary)
     double mu2;                 // mu_i + mu_j
     int boundary;               // 1: fluid-wall pair of the wall boundary, no SPH sums
+    double reach;               // boundary: range delta of the contact with the wall surface
+    double fcontact;            // boundary: contact force F_c at the surface
+    double reachsq;             // boundary: (support + 2/3 longest edge)^2: a triangle kept by a
+                                // wall atom farther away has its centroid outside the support
   };
   PairConst **pc;    // per type pair, from init_one()
 
@@ -71,13 +75,30 @@ class PairCellSPH : public Pair {
   double gamma_min;    // floor of the kernel fraction gamma inside the cell
   double phidq;        // q step of the table of Phi(q) = kernel fraction beyond q = r/h
   std::vector<double> phi, dphi;    // Phi and dPhi/dq at the table points
-  double **wallarea;    // s_w: one third of the outward area vectors of wall atom w's triangles
-  double *deficit;      // 1 - gamma_i of fluid atom i
+  double *deficit;                  // 1 - gamma_i of fluid atom i
   double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
-  int nwallpairs, maxwallpairs;
-  int *wallfluid, *wallatom;    // boundary pairs found by the density pass: fluid and wall atom
-  double *wallgrad;             // grad_i gamma_i term of the pair (3 per pair)
-  enum { COMM_DENSITY, COMM_AREA, COMM_LOAD } commode;
+  // the wall triangles: each one is kept by its vertex b (the angle's middle atom), as the local
+  // indices of a and c, found again on every reneighbouring (owned atoms from their angles,
+  // ghosts by forward comm of the tags)
+  int *tricount, *trifirst;      // triangles kept by atom i: trivert[2 trifirst[i]] ...
+  std::vector<int> trivert;      // a, c of each kept triangle (-1: not on this rank)
+  std::vector<tagint> tritag;    // their tags
+  double edgemax;                // longest edge b-a or b-c of a kept triangle, + the skin
+  double edgecap;                // edgemax allowed in this run: the boundary pairs' cutoff is
+                                 // the kernel support + edgecap
+  struct Term {
+    int f, v[3];        // fluid atom; triangle vertices a, b, c
+    double dv[3][3];    // dD_T/dx_v of the triangle's part D_T of 1 - gamma_f, per vertex
+  };
+  std::vector<Term> terms;    // fluid atoms and the triangles inside their kernel support
+  struct Contact {
+    int f, v[3];         // fluid atom; triangle vertices a, b, c
+    double force[3];     // force on the fluid atom; -lambda_v force on vertex v
+    double lambda[3];    // barycentric coordinates of the closest point
+    double energy;       // contact energy
+  };
+  std::vector<Contact> contacts;    // fluid atoms within reach of a triangle, this step
+  enum { COMM_DENSITY, COMM_LOAD, COMM_TRIANGLES } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
@@ -96,10 +117,12 @@ class PairCellSPH : public Pair {
   template <int KERNEL, int VISCOUS, int WALLS> void sum_density();
   template <int VISCOUS, int EVFLAG> void sum_forces();
   template <int EVFLAG> void wall_forces();
-  void wall_areas();
+  void wall_triangles();
+  void boundary_terms(int, int, const PairConst &);
+  void contact(int, int, int, int, const PairConst &);
+  double longest_edge() const;
   void tabulate_phi();
-  double phi_beyond(double q) const;
-  void grow_wallpairs(int);
+  void phi_beyond(double q, double &value, double &slope) const;
   void apply_eos();
   void grow_pairs(int);
 };
