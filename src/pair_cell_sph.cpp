@@ -37,6 +37,9 @@ static const char *const EOS_NAMES[] = {"linear", "tait"};
 static const int MAXTRI = 8;
 // contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
 static const double CONTACT_H = 2.5;
+// kernel completion evaluated exactly every REFRESH steps (and on reneighbouring), linearised in
+// the atom displacements in between
+static const int REFRESH = 10;
 
 /* ---------------------------------------------------------------------- */
 
@@ -45,7 +48,8 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr), invrho0(nullptr),
     eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1),
     boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), wallload(nullptr),
-    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), commode(COMM_DENSITY),
+    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr),
+    xbase(nullptr), slot(nullptr), refreshing(1), refreshed(-1), commode(COMM_DENSITY),
     restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
     pairj(nullptr), pairdw(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
@@ -70,6 +74,9 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(wallload);
   memory->destroy(tricount);
   memory->destroy(trifirst);
+  memory->destroy(deficit0);
+  memory->destroy(xbase);
+  memory->destroy(slot);
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(setflag);
@@ -105,6 +112,13 @@ void PairCellSPH::compute(int eflag, int vflag)
       memory->destroy(wallload);
       memory->destroy(tricount);
       memory->destroy(trifirst);
+      memory->destroy(deficit0);
+      memory->destroy(xbase);
+      memory->destroy(slot);
+      memory->create(deficit0, nmax, "pair:deficit0");
+      memory->create(xbase, nmax, 3, "pair:xbase");
+      memory->create(slot, nmax, "pair:slot");
+      for (int i = 0; i < nmax; i++) slot[i] = -1;
       memory->create(tricount, nmax, "pair:tricount");
       memory->create(trifirst, nmax, "pair:trifirst");
       memory->create(deficit, nmax, "pair:deficit");
@@ -137,8 +151,16 @@ void PairCellSPH::compute(int eflag, int vflag)
 
   if (walls) {
     if (neighbor->ago == 0 || grown) wall_triangles();
+    refreshing = neighbor->ago == 0 || grown || update->ntimestep - refreshed >= REFRESH ||
+        update->ntimestep < refreshed;
+    if (refreshing) refreshed = update->ntimestep;
   }
   (this->*DENSITY[walls][viscous][kernel])();
+  if (walls) {
+    if (refreshing) merge_terms();
+    contacts.clear();
+    for (const auto &t : touching) contact(t[0], t[1], t[2], t[3]);
+  }
   commode = COMM_DENSITY;
   if (force->newton_pair) CellCompat::reverse_comm(comm, this);
   apply_eos();
@@ -205,12 +227,14 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
   }
   if (WALLS) {
     const int nall = nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) {
-      deficit[i] = 0.0;
-      wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
+    for (int i = 0; i < nall; i++) wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
+    if (refreshing) {
+      for (int i = 0; i < nall; i++) deficit[i] = 0.0;
+      terms.clear();
+      touching.clear();
+    } else {
+      linear_deficit();
     }
-    terms.clear();
-    contacts.clear();
   }
 
   int npairs = 0;
@@ -232,18 +256,20 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
+      const PairConst &p = pci[type[j]];
+      // the wall boundary between exact evaluations: linearised, contacts from the candidates
+      if (WALLS && p.boundary && !refreshing) continue;
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const PairConst &p = pci[type[j]];
       if (rsq >= p.cutsq) continue;
       if (WALLS && p.boundary) {
         if (molecule[i] != molecule[j]) continue;
         // the triangles kept by wall atom b of the fluid atom f's own cell
         const bool ifluid = fluid[type[i]];
-        // no triangle kept by b has its centroid inside the support: |g - r_b| <= 2/3 edge
-        if (rsq < p.reachsq) boundary_terms(ifluid ? i : j, ifluid ? j : i, p);
+        const int f = ifluid ? i : j, b = ifluid ? j : i;
+        boundary_terms(f, b, p);
         continue;
       }
 
@@ -285,6 +311,7 @@ void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
   double **x = atom->x;
   const double *xf = x[f];
   const double support = CellKernel::support(kernel);
+  const double touch = p.reach + neighbor->skin;
   for (int t = trifirst[b]; t < trifirst[b] + tricount[b]; t++) {
     const int a = trivert[2 * t], c = trivert[2 * t + 1];
     // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
@@ -308,11 +335,71 @@ void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
     // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
     const double cg = dph * omega * p.scale.invh / (12.0 * M_PI * gl);
     const double co = ph / (4.0 * M_PI);
-    Term tm{f, {a, b, c}, {}};
-    for (int v = 0; v < 3; v++)
-      for (int d = 0; d < 3; d++) tm.dv[v][d] = cg * g[d] + co * dom[v][d];
-    terms.push_back(tm);
-    if (gl < p.reach + edgemax) contact(f, a, b, c, p);
+    for (int v = 0; v < 3; v++) {
+      Term tm{f, v == 0 ? a : v == 1 ? b : c, {}};
+      for (int d = 0; d < 3; d++) tm.grad[d] = cg * g[d] + co * dom[v][d];
+      terms.push_back(tm);
+    }
+    // contact candidates until the next exact evaluation: every atom moves less than skin/2
+    if (gl < touch + 2.0 / 3.0 * edgemax) {
+      const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
+      const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
+      if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   after an exact evaluation: the terms merged per (fluid atom, vertex), grad_v D_f summed over
+   the vertex's triangles; the deficits and positions kept as the base of the linearisation
+------------------------------------------------------------------------- */
+
+void PairCellSPH::merge_terms()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  // counting sort of the terms by fluid atom, then one term per vertex of each fluid atom
+  std::vector<int> first(nall + 1, 0), order(terms.size());
+  for (const Term &tm : terms) first[tm.f + 1]++;
+  for (int i = 0; i < nall; i++) first[i + 1] += first[i];
+  std::vector<int> next(first.begin(), first.end() - 1);
+  for (int k = 0; k < static_cast<int>(terms.size()); k++) order[next[terms[k].f]++] = k;
+  std::vector<Term> merged;
+  merged.reserve(terms.size() / 2);
+  for (int f = 0; f < nall; f++) {
+    const int start = static_cast<int>(merged.size());
+    for (int k = first[f]; k < first[f + 1]; k++) {
+      const Term &tm = terms[order[k]];
+      if (slot[tm.v] < 0) {
+        slot[tm.v] = static_cast<int>(merged.size());
+        merged.push_back(tm);
+      } else {
+        for (int d = 0; d < 3; d++) merged[slot[tm.v]].grad[d] += tm.grad[d];
+      }
+    }
+    for (int k = start; k < static_cast<int>(merged.size()); k++) slot[merged[k].v] = -1;
+  }
+  terms.swap(merged);
+  double **x = atom->x;
+  for (int i = 0; i < nall; i++) {
+    deficit0[i] = deficit[i];
+    for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f),
+   dx the displacement since the base (grad_f D_f = -sum_v grad_v D_f)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::linear_deficit()
+{
+  double **x = atom->x;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) deficit[i] = deficit0[i];
+  for (const Term &tm : terms) {
+    const double *xv = x[tm.v], *xf = x[tm.f], *bv = xbase[tm.v], *bf = xbase[tm.f];
+    deficit[tm.f] += tm.grad[0] * (xv[0] - bv[0] - xf[0] + bf[0]) +
+        tm.grad[1] * (xv[1] - bv[1] - xf[1] + bf[1]) + tm.grad[2] * (xv[2] - bv[2] - xf[2] + bf[2]);
   }
 }
 
@@ -329,31 +416,24 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
   const double *rho = atom->dvector[irho];
 
   for (const Term &tm : terms) {
-    const int i = tm.f;
-    // F = -grad E of E = sum m e(rho), rho = sum m W / gamma: C_f dgamma_f/dx, C_f = m P / (rho gamma)
-    // on the fluid atom and the vertices (0 where gamma is at its floor)
+    const int i = tm.f, v = tm.v;
+    // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
+    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
     if (1.0 - deficit[i] < gamma_min) continue;
     const double c = rmass[i] * prho2[i] * rho[i];
-    double fi[3] = {0.0, 0.0, 0.0}, fv[3][3];
-    for (int v = 0; v < 3; v++)
-      for (int d = 0; d < 3; d++) {
-        fv[v][d] = -c * tm.dv[v][d];
-        fi[d] -= fv[v][d];
-        f[tm.v[v]][d] += fv[v][d];
-        wallload[tm.v[v]][d] += fv[v][d];
-      }
-    f[i][0] += fi[0];
-    f[i][1] += fi[1];
-    f[i][2] += fi[2];
-    if (EVFLAG && vflag_either) {
-      double dic[3], dac[3], dbc[3];
-      for (int d = 0; d < 3; d++) {
-        dic[d] = x[i][d] - x[tm.v[2]][d];
-        dac[d] = x[tm.v[0]][d] - x[tm.v[2]][d];
-        dbc[d] = x[tm.v[1]][d] - x[tm.v[2]][d];
-      }
-      v_tally4(i, tm.v[0], tm.v[1], tm.v[2], fi, fv[0], fv[1], dic, dac, dbc);
-    }
+    const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    f[v][0] -= fx;
+    f[v][1] -= fy;
+    f[v][2] -= fz;
+    wallload[v][0] -= fx;
+    wallload[v][1] -= fy;
+    wallload[v][2] -= fz;
+    if (EVFLAG)
+      ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
+                   x[i][1] - x[v][1], x[i][2] - x[v][2]);
   }
 
   // contacts with the wall surface: F on the fluid atom, -lambda_v F on vertex v (newton on)
@@ -392,8 +472,9 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
    energy F_c delta (1 - d/delta)^3 / 3, so that F = -grad E for the atom and the vertices
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::contact(int f, int a, int b, int c, const PairConst &p)
+void PairCellSPH::contact(int f, int a, int b, int c)
 {
+  const PairConst &p = pc[atom->type[f]][atom->type[b]];
   double **x = atom->x;
   const CellTriangle::Foot ft = CellTriangle::closest(x[f], x[a], x[b], x[c]);
   const double e[3] = {x[f][0] - ft.p[0], x[f][1] - ft.p[1], x[f][2] - ft.p[2]};
@@ -677,7 +758,7 @@ void PairCellSPH::allocate()
       setflag[i][j] = 0;
       rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
       boundary[i][j] = 0;
-      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0, 0.0};
+      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
     }
     wself[i] = invrho0[i] = eosk[i] = 0.0;
     fluid[i] = 0;
@@ -880,7 +961,7 @@ void PairCellSPH::init_style()
 double PairCellSPH::init_one(int i, int j)
 {
   if (!setflag[i][j]) {
-    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0, 0.0};
+    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
     return 0.0;
   }
   if (boundary[i][j]) {
@@ -893,13 +974,12 @@ double PairCellSPH::init_one(int i, int j)
     const double support = CellKernel::support(kernel) * h[f][f];
     // contact range delta = h / 5 and force F_c = K delta^2 at the surface (doc/pair_cell_sph.md)
     const double reach = h[f][f] / CONTACT_H;
-    // the neighbour range reaches every triangle whose centroid is inside the kernel support
-    const double range = support + edgecap;
-    const double near = support + 2.0 / 3.0 * (edgecap - neighbor->skin) + neighbor->skin;
+    // the neighbour range reaches every triangle whose centroid is inside the kernel support:
+    // the centroid is within 2/3 of the longest edge of the triangle's keeper
+    const double range = support + 2.0 / 3.0 * (edgecap - neighbor->skin);
     pc[i][j] = PairConst{range * range, CellKernel::scale(kernel, 3, h[f][f]),
                          0.0,           1,
-                         reach,         bulk[f][f] * reach * reach,
-                         near * near};
+                         reach,         bulk[f][f] * reach * reach};
     pc[j][i] = pc[i][j];
     return cut_global > 0.0 ? std::max(cut_global, range) : range;
   }

@@ -10,6 +10,7 @@
 #include "cell_kernel.h"
 #include "pair.h"
 
+#include <array>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -55,8 +56,6 @@ class PairCellSPH : public Pair {
     int boundary;               // 1: fluid-wall pair of the wall boundary, no SPH sums
     double reach;               // boundary: range delta of the contact with the wall surface
     double fcontact;            // boundary: contact force F_c at the surface
-    double reachsq;             // boundary: (support + 2/3 longest edge)^2: a triangle kept by a
-                                // wall atom farther away has its centroid outside the support
   };
   PairConst **pc;    // per type pair, from init_one()
 
@@ -87,17 +86,23 @@ class PairCellSPH : public Pair {
   double edgecap;                // edgemax allowed in this run: the boundary pairs' cutoff is
                                  // the kernel support + edgecap
   struct Term {
-    int f, v[3];        // fluid atom; triangle vertices a, b, c
-    double dv[3][3];    // dD_T/dx_v of the triangle's part D_T of 1 - gamma_f, per vertex
+    int f, v;          // fluid atom, wall vertex
+    double grad[3];    // grad_v D_f: derivative of 1 - gamma_f in the vertex's position
   };
-  std::vector<Term> terms;    // fluid atoms and the triangles inside their kernel support
+  std::vector<Term> terms;    // per fluid atom and vertex of the triangles in its kernel support
+  double *deficit0;           // 1 - gamma at the last exact evaluation (partial sums per rank)
+  double **xbase;             // positions at the last exact evaluation
+  int *slot;                  // scratch of merge_terms(), -1 outside it
+  int refreshing;             // 1 if this step evaluates the kernel completion exactly
+  bigint refreshed;           // step of the last exact evaluation
   struct Contact {
     int f, v[3];         // fluid atom; triangle vertices a, b, c
     double force[3];     // force on the fluid atom; -lambda_v force on vertex v
     double lambda[3];    // barycentric coordinates of the closest point
     double energy;       // contact energy
   };
-  std::vector<Contact> contacts;    // fluid atoms within reach of a triangle, this step
+  std::vector<Contact> contacts;               // fluid atoms within reach of a triangle, this step
+  std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
   enum { COMM_DENSITY, COMM_LOAD, COMM_TRIANGLES } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
@@ -119,7 +124,9 @@ class PairCellSPH : public Pair {
   template <int EVFLAG> void wall_forces();
   void wall_triangles();
   void boundary_terms(int, int, const PairConst &);
-  void contact(int, int, int, int, const PairConst &);
+  void merge_terms();
+  void linear_deficit();
+  void contact(int, int, int, int);
   double longest_edge() const;
   void tabulate_phi();
   void phi_beyond(double q, double &value, double &slope) const;
