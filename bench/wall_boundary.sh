@@ -3,7 +3,7 @@
 # (pair cell/wall wallfluid): sealed cells given more water relax at rest, then the radial pressure
 # shells (bench/pressure_shells.py) and the mean SPH pressure against the wall load and the
 # Neo-Hookean membrane law. h and the time step scale with the fluid spacing DX (h = 1.27 DX, the
-# seed's 12.2 um at 9.6 um). On 2 ranks:
+# seed's 12.2 um at 9.6 um; the old model keeps apple.cellsph's 12.2 um). On 2 ranks:
 #   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
 #   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
 #   C. boundary at 1.35 x water, coarse (312 wall, 459 fluid) and fine (2562 wall, 3871 fluid)
@@ -28,6 +28,7 @@ run() {    # name bnd f nwall nfluid [cellgen options]
   local h dt
   h=$(python3 -c "print(12.2e-6*$dx/9.59755e-6)")
   dt=$(python3 -c "print(1e-8*$dx/9.59755e-6)")
+  if [ "$bnd" = 0 ]; then h=12.2e-6 dt=1e-8; fi    # the old model as calibrated (apple.cellsph)
   local t0=$SECONDS
   mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
     -var h "$h" -var dt "$dt" -var gap "$gap" -log log.lammps | grep RESULT

@@ -39,7 +39,7 @@ static const int MAXTRI = 8;
 static const double CONTACT_H = 2.5;
 // kernel completion evaluated exactly every REFRESH steps (and on reneighbouring), linearised in
 // the atom displacements in between
-static const int REFRESH = 10;
+static const int REFRESH = 20;
 
 /* ---------------------------------------------------------------------- */
 
@@ -150,7 +150,10 @@ void PairCellSPH::compute(int eflag, int vflag)
       {&PairCellSPH::sum_forces<1, 0>, &PairCellSPH::sum_forces<1, 1>}};
 
   if (walls) {
-    if (neighbor->ago == 0 || grown) wall_triangles();
+    if (neighbor->ago == 0 || grown) {
+      wall_triangles();
+      split_list();
+    }
     refreshing = neighbor->ago == 0 || grown || update->ntimestep - refreshed >= REFRESH ||
         update->ntimestep < refreshed;
     if (refreshing) refreshed = update->ntimestep;
@@ -198,7 +201,6 @@ void PairCellSPH::compute(int eflag, int vflag)
 template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
 {
   double **x = atom->x;
-  const tagint *molecule = atom->molecule;
   double *rho = atom->dvector[irho];
   const double *rmass = atom->rmass;
   const int *type = atom->type;
@@ -245,8 +247,9 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
     const double ztmp = x[i][2];
     const double mi = rmass[i];
     const PairConst *pci = pc[type[i]];
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
+    // with the wall boundary, the fluid pairs of the list (split_list() at reneighbouring)
+    const int *jlist = WALLS ? &fluidj[fluidfirst[ii]] : firstneigh[i];
+    const int jnum = WALLS ? fluidfirst[ii + 1] - fluidfirst[ii] : numneigh[i];
     if (npairs + jnum > maxpairs) grow_pairs(npairs + jnum);
     int *pj = pairj;
     double *pdw = pairdw;
@@ -257,21 +260,11 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const PairConst &p = pci[type[j]];
-      // the wall boundary between exact evaluations: linearised, contacts from the candidates
-      if (WALLS && p.boundary && !refreshing) continue;
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= p.cutsq) continue;
-      if (WALLS && p.boundary) {
-        if (molecule[i] != molecule[j]) continue;
-        // the triangles kept by wall atom b of the fluid atom f's own cell
-        const bool ifluid = fluid[type[i]];
-        const int f = ifluid ? i : j, b = ifluid ? j : i;
-        boundary_terms(f, b, p);
-        continue;
-      }
 
       const double r = sqrt(rsq);
       const double mj = rmass[j];
@@ -289,6 +282,17 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
     rho[i] += rhoi;
   }
   pairfirst[inum] = npairs;
+
+  // the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f
+  if (WALLS && refreshing)
+    for (const auto &fb : boundarypairs) {
+      const int f = fb[0], b = fb[1];
+      const double delx = x[f][0] - x[b][0];
+      const double dely = x[f][1] - x[b][1];
+      const double delz = x[f][2] - x[b][2];
+      const PairConst &p = pc[type[f]][type[b]];
+      if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms(f, b, p);
+    }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -347,6 +351,37 @@ void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
       if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   at reneighbouring: the neighbour list split into the fluid pairs of the SPH sums and the
+   fluid-wall pairs of the wall boundary (same cell), so that the steps between exact evaluations
+   of the boundary do not visit the boundary pairs
+------------------------------------------------------------------------- */
+
+void PairCellSPH::split_list()
+{
+  const tagint *molecule = atom->molecule;
+  const int *type = atom->type;
+  const int inum = list->inum;
+  fluidfirst.assign(inum + 1, 0);
+  fluidj.clear();
+  boundarypairs.clear();
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    fluidfirst[ii] = static_cast<int>(fluidj.size());
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const PairConst &p = pc[type[i]][type[j]];
+      if (!p.boundary)
+        fluidj.push_back(j);
+      else if (molecule[i] == molecule[j])
+        boundarypairs.push_back(fluid[type[i]] ? std::array<int, 2>{i, j}
+                                               : std::array<int, 2>{j, i});
+    }
+  }
+  fluidfirst[inum] = static_cast<int>(fluidj.size());
 }
 
 /* ----------------------------------------------------------------------

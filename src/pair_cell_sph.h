@@ -103,6 +103,8 @@ class PairCellSPH : public Pair {
   };
   std::vector<Contact> contacts;               // fluid atoms within reach of a triangle, this step
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
+  std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
+  std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell
   enum { COMM_DENSITY, COMM_LOAD, COMM_TRIANGLES } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
@@ -124,6 +126,7 @@ class PairCellSPH : public Pair {
   template <int EVFLAG> void wall_forces();
   void wall_triangles();
   void boundary_terms(int, int, const PairConst &);
+  void split_list();
   void merge_terms();
   void linear_deficit();
   void contact(int, int, int, int);
