@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Containment by the SPH wall boundary at five resolutions (312 to 10242 wall particles, R0 = 75
+# um, h = 1.27 DX, time step 1e-8 s x DX / 9.6 um): a sealed cell inflated to 1.35 x its volume's
+# worth of water, and one shrunk to 0.35 x with wall-fluid adhesion over the boundary (drying goes
+# there; without adhesion the fluid leaves the wall instead of pulling it in). apple.cellsph
+# unchanged, cellgen's default gap. Prints the number of fluid atoms outside the wall (winding
+# number, compute cell/props column 16), the volume, the fluid-free volume and the pressures.
+# About 15 minutes on 2 free cores. `bench/wall_boundary_containment.sh 312 1092` runs some.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+build=${CELLSPH_BUILD:-$here/../build}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+export LAMMPS_POTENTIALS=$here/../potentials
+declare -A NFLUID=([312]=450 [1092]=1624 [2562]=3900 [5762]=8800 [10242]=15600)
+walls=${*:-312 1092 2562 5762 10242}
+for nwall in $walls; do
+  for mode in inflate shrink; do
+    dir="$work/$nwall-$mode"
+    mkdir -p "$dir" && cd "$dir"
+    "$build/tools/cellgen/cellgen" --nwall "$nwall" --nfluid "${NFLUID[$nwall]}" \
+      --wall-mass 1e-12 --out cell.data >cellgen.log
+    line=$(head -1 cellgen.log)
+    nfluid=$(sed -nE 's/^particles: ([0-9]+) fluid.*/\1/p' cellgen.log)
+    dx=$(sed -E 's/.*DX = ([0-9.e+-]+) m.*/\1/' <<<"$line")
+    gap=$(sed -E 's/.*gap = ([0-9.e+-]+) m.*/\1/' <<<"$line")
+    h=$(python3 -c "print(12.2e-6*$dx/9.59755e-6)")
+    dt=$(python3 -c "print(1e-8*$dx/9.59755e-6)")
+    if [ "$mode" = inflate ]; then f=1.35 adh=0; else f=0.35 adh=1; fi
+    t0=$SECONDS
+    result=$(mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd 1 -var adh "$adh" \
+      -var f "$f" -var h "$h" -var dt "$dt" -var gap "$gap" -var nrelax 20000 -log log.lammps |
+      grep RESULT || echo "RESULT failed: $(grep -m1 ERROR log.lammps)")
+    echo "$nwall wall, $nfluid fluid, $mode: ${result#RESULT } ($((SECONDS - t0)) s)"
+  done
+done
