@@ -3,7 +3,9 @@
 # um, h = 1.27 DX, time step 1e-8 s x DX / 9.6 um): a sealed cell inflated to 1.35 x its volume's
 # worth of water, and one shrunk to 0.35 x with wall-fluid adhesion over the boundary (drying goes
 # there; without adhesion the fluid leaves the wall instead of pulling it in). apple.cellsph
-# unchanged, cellgen's default gap. Prints the number of fluid atoms outside the wall (winding
+# unchanged but for the wall-wall contact, whose size follows the wall spacing (at 10242 wall
+# particles the seed's sigma = 7.7 um spans two rings of neighbours and blows the wall up);
+# cellgen's default gap. Prints the number of fluid atoms outside the wall (winding
 # number, compute cell/props column 16), the volume, the fluid-free volume and the pressures.
 # About 15 minutes on 2 free cores. `bench/wall_boundary_containment.sh 312 1092` runs some.
 set -euo pipefail
@@ -28,8 +30,10 @@ for nwall in $walls; do
     h=$(python3 -c "print(12.2e-6*$dx/9.59755e-6)")
     dt=$(python3 -c "print(1e-8*$dx/9.59755e-6)")
     if [ "$mode" = inflate ]; then f=1.35 adh=0; else f=0.35 adh=1; fi
+    nw=$(sed -nE 's/.*: ([0-9]+) wall particles per cell.*/\1/p' cellgen.log)
+    ws=$(python3 -c "print((1092/$nw)**0.5)")    # the wall-wall contact follows the wall spacing
     t0=$SECONDS
-    result=$(mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd 1 -var adh "$adh" \
+    result=$(mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd 1 -var adh "$adh" -var ws "$ws" \
       -var f "$f" -var h "$h" -var dt "$dt" -var gap "$gap" -var nrelax 20000 -log log.lammps |
       grep RESULT || echo "RESULT failed: $(grep -m1 ERROR log.lammps)")
     echo "$nwall wall, $nfluid fluid, $mode: ${result#RESULT } ($((SECONDS - t0)) s)"
