@@ -9,6 +9,7 @@
 
 #include "atom.h"
 #include "cell_params.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -305,12 +306,8 @@ void BondCellNeoHookean::read_restart(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const int version = first < 0.0 ? (int) lround(-first) : 1;
-  if (version > RESTART_VERSION)
-    error->all(FLERR,
-               "Bond style cell/neohookean: the restart file has format version {}, newer than "
-               "this plugin's {}: use a newer cellsph",
-               version, RESTART_VERSION);
+  const int version = CellRestart::version(first);
+  CellRestart::refuse_newer(error, FLERR, "Bond style cell/neohookean", version, RESTART_VERSION);
   if (comm->me == 0) {
     // version 1: the value read was G of bond type 1
     if (version == 1) shear[1] = first;

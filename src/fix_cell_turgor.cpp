@@ -12,6 +12,7 @@
 #include "cell_compat.h"
 #include "cell_params.h"
 #include "cell_reduce.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -407,12 +408,8 @@ void FixCellTurgor::write_restart(FILE *fp)
 void FixCellTurgor::restart(char *buf)
 {
   const double *list = (double *) buf;
-  const int version = list[0] < 0.0 ? (int) lround(-list[0]) : 1;
-  if (version > RESTART_VERSION)
-    error->all(FLERR,
-               "Fix cell/turgor: the restart file has format version {}, newer than this plugin's "
-               "{}: use a newer cellsph",
-               version, RESTART_VERSION);
+  const int version = CellRestart::version(list[0]);
+  CellRestart::refuse_newer(error, FLERR, "Fix cell/turgor", version, RESTART_VERSION);
   if (version >= 2) list++;
   const double count = list[0];
   if (!(count >= 0.0 && count == floor(count)))

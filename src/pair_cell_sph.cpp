@@ -13,6 +13,7 @@
 #include "atom.h"
 #include "cell_compat.h"
 #include "cell_params.h"
+#include "cell_restart.h"
 #include "cell_triangle.h"
 #include "comm.h"
 #include "domain.h"
@@ -56,27 +57,19 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
   restartinfo = 1;
   writedata = 1;
   reinitflag = 0;
-  comm_forward = 3;    // rho, pressure; or the wall area vectors; (with walls) triangle tags
-  comm_reverse = 3;    // rho and the kernel deficit; or the wall area vectors or wall load
+  comm_forward = 3;    // rho, pressure (and the kernel deficit); with walls: triangle tags
+  comm_reverse = 3;    // rho (and the kernel deficit); or the wall load
 }
 
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::~PairCellSPH()
 {
-  memory->destroy(prho2);
-  memory->destroy(rhoinv);
+  destroy_peratom();
   memory->destroy(pairfirst);
   memory->destroy(pairj);
   memory->destroy(pairdw);
   memory->destroy(pairmu);
-  memory->destroy(deficit);
-  memory->destroy(wallload);
-  memory->destroy(tricount);
-  memory->destroy(trifirst);
-  memory->destroy(deficit0);
-  memory->destroy(xbase);
-  memory->destroy(slot);
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(setflag);
@@ -99,32 +92,8 @@ void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  bool grown = false;
-  if (atom->nmax > nmax || (walls && !deficit)) {
-    grown = true;
-    nmax = atom->nmax;
-    memory->destroy(prho2);
-    memory->destroy(rhoinv);
-    memory->create(prho2, nmax, "pair:prho2");
-    memory->create(rhoinv, nmax, "pair:rhoinv");
-    if (walls) {
-      memory->destroy(deficit);
-      memory->destroy(wallload);
-      memory->destroy(tricount);
-      memory->destroy(trifirst);
-      memory->destroy(deficit0);
-      memory->destroy(xbase);
-      memory->destroy(slot);
-      memory->create(deficit0, nmax, "pair:deficit0");
-      memory->create(xbase, nmax, 3, "pair:xbase");
-      memory->create(slot, nmax, "pair:slot");
-      for (int i = 0; i < nmax; i++) slot[i] = -1;
-      memory->create(tricount, nmax, "pair:tricount");
-      memory->create(trifirst, nmax, "pair:trifirst");
-      memory->create(deficit, nmax, "pair:deficit");
-      memory->create(wallload, nmax, 3, "pair:wallload");
-    }
-  }
+  const bool grown = atom->nmax > nmax || (walls && !deficit);
+  if (grown) grow_peratom();
 
   // the loops compiled for this kernel, with or without wall boundary, viscosity and tallies
   typedef void (PairCellSPH::*Loop)();
@@ -191,6 +160,40 @@ void PairCellSPH::compute(int eflag, int vflag)
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   per-atom arrays (owned and ghost) at atom->nmax: the force pass's, and the wall boundary's
+------------------------------------------------------------------------- */
+
+void PairCellSPH::destroy_peratom()
+{
+  memory->destroy(prho2);
+  memory->destroy(rhoinv);
+  memory->destroy(deficit);
+  memory->destroy(wallload);
+  memory->destroy(tricount);
+  memory->destroy(trifirst);
+  memory->destroy(deficit0);
+  memory->destroy(xbase);
+  memory->destroy(slot);
+}
+
+void PairCellSPH::grow_peratom()
+{
+  destroy_peratom();
+  nmax = atom->nmax;
+  memory->create(prho2, nmax, "pair:prho2");
+  memory->create(rhoinv, nmax, "pair:rhoinv");
+  if (!walls) return;
+  memory->create(deficit, nmax, "pair:deficit");
+  memory->create(wallload, nmax, 3, "pair:wallload");
+  memory->create(tricount, nmax, "pair:tricount");
+  memory->create(trifirst, nmax, "pair:trifirst");
+  memory->create(deficit0, nmax, "pair:deficit0");
+  memory->create(xbase, nmax, 3, "pair:xbase");
+  memory->create(slot, nmax, "pair:slot");
+  for (int i = 0; i < nmax; i++) slot[i] = -1;
 }
 
 /* ----------------------------------------------------------------------
@@ -1118,18 +1121,14 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   if (comm->me == 0) {
     int first;
     utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
-    restart_version = first >= 0 ? 1 : -first;
+    restart_version = CellRestart::version(first);
     if (first < 0) utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
     kernel = first;
     utils::sfread(FLERR, &eos, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
-  if (restart_version > RESTART_VERSION)
-    error->all(FLERR,
-               "Pair cell/sph: the restart file has format version {}, newer than this plugin's "
-               "{}: use a newer cellsph",
-               restart_version, RESTART_VERSION);
+  CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
   MPI_Bcast(&eos, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
@@ -1258,7 +1257,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   ghost sums into owners: rho (and the kernel deficit), the wall area vectors, or the wall load
+   ghost sums into owners: rho (and the kernel deficit), or the wall load
 ------------------------------------------------------------------------- */
 
 int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
@@ -1310,6 +1309,13 @@ bool PairCellSPH::has_wall_boundary() const
 
 double PairCellSPH::memory_usage()
 {
-  return Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
+  double bytes = Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
+  if (walls)
+    bytes += nmax * (8.0 * sizeof(double) + 3.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
+        contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
+        trivert.capacity() * sizeof(int) + tritag.capacity() * sizeof(tagint) +
+        fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
+        boundarypairs.capacity() * sizeof(boundarypairs[0]);
+  return bytes;
 }

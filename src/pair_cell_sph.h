@@ -120,6 +120,8 @@ class PairCellSPH : public Pair {
   int maxfirst, maxpairs;
 
   void allocate();
+  void grow_peratom();
+  void destroy_peratom();
   void unstable(int) const;
   template <int KERNEL, int VISCOUS, int WALLS> void sum_density();
   template <int VISCOUS, int EVFLAG> void sum_forces();

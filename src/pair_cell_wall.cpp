@@ -12,6 +12,7 @@
 #include "atom.h"
 #include "cell_compat.h"
 #include "cell_params.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -593,12 +594,8 @@ void PairCellWall::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const int version = first < 0.0 ? (int) lround(-first) : 1;
-  if (version > RESTART_VERSION)
-    error->all(FLERR,
-               "Pair cell/wall: the restart file has format version {}, newer than this plugin's "
-               "{}: use a newer cellsph",
-               version, RESTART_VERSION);
+  const int version = CellRestart::version(first);
+  CellRestart::refuse_newer(error, FLERR, "Pair cell/wall", version, RESTART_VERSION);
   cut_global = first;
   if (version >= 2 && comm->me == 0)
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
