@@ -3,10 +3,11 @@
 # (pair cell/wall wallfluid): sealed cells given more water relax at rest, then the radial pressure
 # shells (bench/pressure_shells.py) and the mean SPH pressure against the wall load and the
 # Neo-Hookean membrane law. h and the time step scale with the fluid spacing DX (h = 1.27 DX, the
-# seed's 12.2 um at 9.6 um; the old model keeps apple.cellsph's 12.2 um). On 2 ranks:
+# seed's 12.2 um at 9.6 um; the old model keeps apple.cellsph's 12.2 um), the wall-wall contact
+# size with the wall spacing (bench/scaled_cell.sh). On 2 ranks:
 #   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
 #   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
-#   C. boundary at 1.35 x water, coarse (312 wall, 459 fluid) and fine (2562 wall, 3871 fluid)
+#   C. boundary at 1.35 x water, coarse (312 wall, 461 fluid) and fine (2562 wall, 3911 fluid)
 # About 25 minutes on 2 free cores; `bench/wall_boundary.sh A` runs one part.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -16,22 +17,17 @@ trap 'rm -rf "$work"' EXIT
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 export LAMMPS_POTENTIALS=$here/../potentials
 parts=${1:-ABC}
+source "$here/scaled_cell.sh"
 run() {    # name bnd f nwall nfluid [cellgen options]
   local name=$1 bnd=$2 f=$3 nwall=$4 nfluid=$5
   shift 5
   mkdir -p "$work/$name" && cd "$work/$name"
-  local line dx gap
-  line=$("$build/tools/cellgen/cellgen" --nwall "$nwall" --nfluid "$nfluid" --wall-mass 1e-12 "$@" \
-    --out cell.data | head -1)
-  dx=$(sed -E 's/.*DX = ([0-9.e+-]+) m.*/\1/' <<<"$line")
-  gap=$(sed -E 's/.*gap = ([0-9.e+-]+) m.*/\1/' <<<"$line")
-  local h dt
-  h=$(python3 -c "print(12.2e-6*$dx/9.59755e-6)")
-  dt=$(python3 -c "print(1e-8*$dx/9.59755e-6)")
+  local dx gap h dt ws
+  scaled_cell "$nwall" "$nfluid" "$@"
   if [ "$bnd" = 0 ]; then h=12.2e-6 dt=1e-8; fi    # the old model as calibrated (apple.cellsph)
   local t0=$SECONDS
   mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
-    -var h "$h" -var dt "$dt" -var gap "$gap" -log log.lammps | grep RESULT
+    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -log log.lammps | grep RESULT
   python3 "$here/pressure_shells.py" profile.txt "$name" | tail -1
   echo "  ($((SECONDS - t0)) s, DX $dx, gap $gap)"
 }

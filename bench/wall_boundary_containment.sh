@@ -15,23 +15,14 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 export LAMMPS_POTENTIALS=$here/../potentials
+source "$here/scaled_cell.sh"
 declare -A NFLUID=([312]=450 [1092]=1624 [2562]=3900 [5762]=8800 [10242]=15600)
-walls=${*:-312 1092 2562 5762 10242}
-for nwall in $walls; do
+for want in ${*:-312 1092 2562 5762 10242}; do
   for mode in inflate shrink; do
-    dir="$work/$nwall-$mode"
+    dir="$work/$want-$mode"
     mkdir -p "$dir" && cd "$dir"
-    "$build/tools/cellgen/cellgen" --nwall "$nwall" --nfluid "${NFLUID[$nwall]}" \
-      --wall-mass 1e-12 --out cell.data >cellgen.log
-    line=$(head -1 cellgen.log)
-    nfluid=$(sed -nE 's/^particles: ([0-9]+) fluid.*/\1/p' cellgen.log)
-    dx=$(sed -E 's/.*DX = ([0-9.e+-]+) m.*/\1/' <<<"$line")
-    gap=$(sed -E 's/.*gap = ([0-9.e+-]+) m.*/\1/' <<<"$line")
-    h=$(python3 -c "print(12.2e-6*$dx/9.59755e-6)")
-    dt=$(python3 -c "print(1e-8*$dx/9.59755e-6)")
+    scaled_cell "$want" "${NFLUID[$want]}"    # the wall-wall contact follows the wall spacing
     if [ "$mode" = inflate ]; then f=1.35 adh=0; else f=0.35 adh=1; fi
-    nw=$(sed -nE 's/.*: ([0-9]+) wall particles per cell.*/\1/p' cellgen.log)
-    ws=$(python3 -c "print((1092/$nw)**0.5)")    # the wall-wall contact follows the wall spacing
     t0=$SECONDS
     result=$(mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd 1 -var adh "$adh" -var ws "$ws" \
       -var f "$f" -var h "$h" -var dt "$dt" -var gap "$gap" -var nrelax 20000 -log log.lammps |
