@@ -670,7 +670,7 @@ void FixCellTurgor::restart(char *buf)
   physical_time = list[1];
   water_moved = list[2];
   state.clear();
-  bool other_pi0 = false;
+  bool other_pi0 = false, other_solids = false;
   const int nvalues = restart_values(version);
   for (int k = 0; k < n; k++) {
     const double *v = &list[3 + nvalues * k];
@@ -684,12 +684,21 @@ void FixCellTurgor::restart(char *buf)
     const double solids = version >= 3 ? v[5] : 0.0;
     state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0};
     other_pi0 = other_pi0 || v[2] != pi0;
+    other_solids = other_solids ||
+        (solids > 0.0 && solids_fraction > 0.0 &&
+         fabs(solids - v[1] * solids_fraction / (1.0 - solids_fraction)) > 1e-12 * solids);
   }
   if (other_pi0 && comm->me == 0)
     error->warning(FLERR,
                    "Fix cell/turgor: cells continue with the osmotic pressure pi0 stored in the "
                    "restart file, not pi0 = {}",
                    pi0);
+  if (other_solids && comm->me == 0)
+    error->warning(
+        FLERR,
+        "Fix cell/turgor: cells continue with the dry solids stored in the restart file, "
+        "not those of solids = {}",
+        solids_fraction);
 }
 
 /* ---------------------------------------------------------------------- */
