@@ -79,15 +79,16 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       pi0 = utils::numeric(FLERR, value, false, lmp);
       pi0_set = true;
     } else if (key == "psi") {
-      parse_input(psi, value);
+      parse_quantity(psi, value);
       drives += " psi";
       ndrive++;
     } else if (key == "air") {
       char **v = values(key, 3);
-      parse_input(air_t, v[0]);
-      parse_input(air_rh, v[1]);
-      parse_input(air_hm, v[2]);
-      check_air(air_t.name.empty() ? air_t.value : 300.0, air_rh.name.empty() ? air_rh.value : 1.0,
+      parse_quantity(air_t, v[0]);
+      parse_quantity(air_rh, v[1]);
+      parse_quantity(air_hm, v[2]);
+      // numbers are checked now, variables at every transfer (placeholders pass the check)
+      check_air(air_t.name.empty() ? air_t.value : tref, air_rh.name.empty() ? air_rh.value : 1.0,
                 air_hm.name.empty() ? air_hm.value : 0.0);
       used = 4;
       if (iarg + 5 < narg && strcmp(arg[iarg + 4], "area") == 0) {
@@ -101,7 +102,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       drives += " air";
       ndrive++;
     } else if (key == "curve") {
-      parse_input(curve, value);
+      parse_quantity(curve, value);
       if (curve.name.empty())
         error->all(FLERR, "Fix cell/turgor: curve = {} must be an equal-style variable v_name",
                    value);
@@ -109,7 +110,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       drives += " curve";
       ndrive++;
     } else if (key == "temp") {
-      parse_input(temp, value);
+      parse_quantity(temp, value);
       if (temp.name.empty() && !(temp.value > 0.0))
         error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0", temp.value);
       temp_set = true;
@@ -216,7 +217,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                "C > 0 and 0 < K <= 1 (K > 1 diverges below a_w = 1)",
                gab_xm, gab_c, gab_k);
   // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
-  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : Input{tref, "", -1};
+  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : Quantity{tref, "", -1};
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
@@ -233,15 +234,15 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
    a number or v_name; variables are looked up in init() (they may be defined after the fix)
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::parse_input(Input &in, const char *arg)
+void FixCellTurgor::parse_quantity(Quantity &in, const char *arg)
 {
   if (strncmp(arg, "v_", 2) == 0)
-    in = Input{0.0, arg + 2, -1};
+    in = Quantity{0.0, arg + 2, -1};
   else
-    in = Input{utils::numeric(FLERR, arg, false, lmp), "", -1};
+    in = Quantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
 }
 
-void FixCellTurgor::resolve(Input &in)
+void FixCellTurgor::resolve(Quantity &in)
 {
   if (in.name.empty()) return;
   in.ivar = input->variable->find(in.name.c_str());
@@ -250,7 +251,7 @@ void FixCellTurgor::resolve(Input &in)
     error->all(FLERR, "Fix cell/turgor: variable {} is not equal-style", in.name);
 }
 
-double FixCellTurgor::value(const Input &in)
+double FixCellTurgor::value(const Quantity &in)
 {
   return in.name.empty() ? in.value : input->variable->compute_equal(in.ivar);
 }
@@ -294,7 +295,7 @@ void FixCellTurgor::init()
   cells->init();
   for (int c = 0; c < cells->ncell(); c++)
     state.emplace(cells->id(c), CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0});
-  for (Input *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve}) resolve(*in);
+  for (Quantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve}) resolve(*in);
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -370,7 +371,11 @@ void FixCellTurgor::evaluate(bool transfer)
     const double tair = value(air_t), rh = value(air_rh);
     hm = value(air_hm);
     check_air(tair, rh, hm);
-    check_air(t, rh, hm);
+    if (!(t < CellWater::CRITICAL_T))
+      error->all(FLERR,
+                 "Fix cell/turgor: temperature T = {} K must be below the critical point of water, "
+                 "{} K",
+                 t, CellWater::CRITICAL_T);
     rho_sat = CellWater::saturation_density(t);
     rho_air = rh * CellWater::saturation_density(tair);
     // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
@@ -622,7 +627,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
     if (drive != DRIVE_PSI)
       error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
                  drive == DRIVE_AIR ? "air" : "curve");
-    parse_input(psi, arg[1]);
+    parse_quantity(psi, arg[1]);
     resolve(psi);
   } else {
     if (value <= 0.0) error->all(FLERR, "Fix_modify cell/turgor: accel = {} must be > 0", value);

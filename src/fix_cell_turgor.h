@@ -60,7 +60,7 @@ class FixCellTurgor : public Fix {
     double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
   };
   // a number, or an equal-style variable v_name evaluated at every transfer
-  struct Input {
+  struct Quantity {
     double value;
     std::string name;    // variable name, empty for a number
     int ivar;
@@ -68,7 +68,7 @@ class FixCellTurgor : public Fix {
 
   double lp, pi0, rhow, accel;
   int drive;
-  Input psi, temp, air_t, air_rh, air_hm, curve;
+  Quantity psi, temp, air_t, air_rh, air_hm, curve;
   double area_fraction;      // share of the wall area in contact with the air
   double ea, tref;           // activation energy of L_P (J/mol), reference temperature (K)
   double solids_fraction;    // wet-basis solids fraction w_s, 0 = none
@@ -90,9 +90,9 @@ class FixCellTurgor : public Fix {
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
   double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
-  void parse_input(Input &in, const char *arg);
-  void resolve(Input &in);
-  double value(const Input &in);
+  void parse_quantity(Quantity &in, const char *arg);
+  void resolve(Quantity &in);
+  double value(const Quantity &in);
   void check_air(double t, double rh, double hm);
 };
 
