@@ -45,7 +45,8 @@ static int restart_values(int version)
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0),
     drive(DRIVE_PSI), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
-    air_hm{0.0, "", -1}, curve{0.0, "", -1}, area_fraction(1.0), ea(0.0), tref(298.15),
+    air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
+    air_flow(0), area_fraction(1.0), mass_transfer(0.0), ea(0.0), tref(298.15),
     solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
     tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
     fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
@@ -86,17 +87,28 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       char **v = values(key, 3);
       parse_quantity(air_t, v[0]);
       parse_quantity(air_rh, v[1]);
-      parse_quantity(air_hm, v[2]);
-      // numbers are checked now, variables at every transfer (placeholders pass the check)
-      check_air(air_t.name.empty() ? air_t.value : tref, air_rh.name.empty() ? air_rh.value : 1.0,
-                air_hm.name.empty() ? air_hm.value : 0.0);
       used = 4;
-      if (iarg + 5 < narg && strcmp(arg[iarg + 4], "area") == 0) {
-        area_fraction = utils::numeric(FLERR, arg[iarg + 5], false, lmp);
+      air_flow = strcmp(v[2], "flow") == 0;
+      if (air_flow) {
+        v = values(key, 5);
+        parse_quantity(air_speed, v[3]);
+        parse_quantity(air_length, v[4]);
+        used = 6;
+      } else {
+        parse_quantity(air_hm, v[2]);
+      }
+      // numbers are checked now, variables at every transfer (placeholders pass the check)
+      const double t0 = air_t.name.empty() ? air_t.value : tref;
+      check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0,
+                air_hm.name.empty() ? air_hm.value : 0.0);
+      if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
+        flow_transfer(t0, air_speed.value, air_length.value);
+      if (iarg + used + 1 < narg && strcmp(arg[iarg + used], "area") == 0) {
+        area_fraction = utils::numeric(FLERR, arg[iarg + used + 1], false, lmp);
         if (!(area_fraction > 0.0 && area_fraction <= 1.0))
           error->all(FLERR, "Fix cell/turgor: air area fraction = {} must be in (0, 1]",
                      area_fraction);
-        used = 6;
+        used += 2;
       }
       drive = DRIVE_AIR;
       drives += " air";
@@ -223,7 +235,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   cells->set_turgor(measure);
 
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 7;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -254,6 +266,29 @@ void FixCellTurgor::resolve(Quantity &in)
 double FixCellTurgor::value(const Quantity &in)
 {
   return in.name.empty() ? in.value : input->variable->compute_equal(in.ivar);
+}
+
+/* ----------------------------------------------------------------------
+   h_m of air at T flowing at U >= 0 along a sample of length L > 0: laminar flat plate,
+   Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::flow_transfer(double t, double u, double l)
+{
+  if (!(u >= 0.0)) error->all(FLERR, "Fix cell/turgor: air speed U = {} m/s must be >= 0", u);
+  if (!(l > 0.0)) error->all(FLERR, "Fix cell/turgor: sample length L = {} m must be > 0", l);
+  if (!(t > 250.0 && t < 450.0))
+    error->all(FLERR,
+               "Fix cell/turgor: air temperature T = {} K is outside 250-450 K, the range of the "
+               "vapour diffusivity in air behind 'flow' (give h_m instead)",
+               t);
+  const double re = CellWater::reynolds(t, u, l);
+  if (!(re < 5e5))
+    error->all(FLERR,
+               "Fix cell/turgor: air flow U = {} m/s along L = {} m has Re = {:.4g}, beyond the "
+               "laminar flat-plate correlation (Re < 5e5): give h_m instead",
+               u, l, re);
+  return CellWater::plate_transfer(t, u, l);
 }
 
 /* ----------------------------------------------------------------------
@@ -295,7 +330,8 @@ void FixCellTurgor::init()
   cells->init();
   for (int c = 0; c < cells->ncell(); c++)
     state.emplace(cells->id(c), CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0});
-  for (Quantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve}) resolve(*in);
+  for (Quantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
+    resolve(*in);
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -369,7 +405,8 @@ void FixCellTurgor::evaluate(bool transfer)
     psi_ext = value(psi);
   } else if (drive == DRIVE_AIR) {
     const double tair = value(air_t), rh = value(air_rh);
-    hm = value(air_hm);
+    hm = air_flow ? flow_transfer(tair, value(air_speed), value(air_length)) : value(air_hm);
+    mass_transfer = hm;
     check_air(tair, rh, hm);
     if (!(t < CellWater::CRITICAL_T))
       error->all(FLERR,
@@ -594,13 +631,14 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 /* ----------------------------------------------------------------------
    1 water moved into the cells (kg), 2 physical time (s), 3 cells, 4 max |psi_ext - psi_cell| (Pa),
-   5 max h k: an explicit update would be unstable above 2, 6 temperature T (K)
+   5 max h k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s)
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
 {
   const double values[] = {water_moved,   physical_time, (double) cells->ncell(),
-                           max_imbalance, max_stiffness, temperature};
+                           max_imbalance, max_stiffness, temperature,
+                           mass_transfer};
   return values[n];
 }
 

@@ -69,7 +69,10 @@ class FixCellTurgor : public Fix {
   double lp, pi0, rhow, accel;
   int drive;
   Quantity psi, temp, air_t, air_rh, air_hm, curve;
+  Quantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
+  int air_flow;
   double area_fraction;      // share of the wall area in contact with the air
+  double mass_transfer;      // h_m of the last evaluation (m/s)
   double ea, tref;           // activation energy of L_P (J/mol), reference temperature (K)
   double solids_fraction;    // wet-basis solids fraction w_s, 0 = none
   int isotherm;              // 1: GAB isotherm below
@@ -94,6 +97,7 @@ class FixCellTurgor : public Fix {
   void resolve(Quantity &in);
   double value(const Quantity &in);
   void check_air(double t, double rh, double hm);
+  double flow_transfer(double t, double u, double l);
 };
 
 }    // namespace LAMMPS_NS
