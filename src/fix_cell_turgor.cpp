@@ -1,8 +1,9 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor: every N steps each cell (molecule ID) gains or loses water at the rate
-   dM/dt = rho_w L_P A (psi_ext - (P_T - pi)), integrated with an exponential Euler step in the
-   cell's pressure response so that it is stable for any L_P, and spread over the cell's fluid.
+   dM/dt = rho_w L_P A (psi_ext - (P_T - pi)), or through the wall and an air film in series, or
+   along a prescribed X/X0(t) (doc/model.md §5.7-5.10), integrated with an exponential Euler step
+   in the cell's pressure response so that it is stable for any L_P, and spread over its fluid.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_turgor.h"

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor: water transfer through the cell wall driven by turgor, osmotic pressure and the
-   external water potential (doc/model.md §5)
+   external water potential, or air of a given temperature and humidity (doc/model.md §5)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_CELL_TURGOR_H
