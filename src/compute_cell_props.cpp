@@ -8,6 +8,7 @@
 
 #include "atom.h"
 #include "cell_reduce.h"
+#include "cell_water.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -122,13 +123,22 @@ void ComputeCellProps::compute_array()
     // P_T and pi from the first fix cell/turgor acting on the cell, else this compute's measure and 0
     row[TURGOR] = cells->turgor(c);
     row[OSMOTIC] = 0.0;
+    FixCellTurgor::Water water{0.0, 0.0, 0.0, 0.0, 0.0};
     for (auto *fix : turgor)
       if (fix->osmotic(cells->id(c), row[MASS], row[OSMOTIC])) {
         fix->turgor(cells->id(c), row[TURGOR]);
+        fix->water(cells->id(c), row[MASS], water);
         break;
       }
     // psi_cell = P_T - pi
     row[PSI] = row[TURGOR] - row[OSMOTIC];
+    row[MOISTURE] = water.moisture;
+    row[MOISTURE_RELATIVE] = water.relative;
+    // a_w = exp(psi V_w / (R T)) (Kelvin, doc/model.md §5.7); 0 without a fix cell/turgor
+    row[ACTIVITY] =
+        water.temperature > 0.0 ? CellWater::activity(row[PSI], water.temperature) : 0.0;
+    row[PSI_SURFACE] = water.psi_surface;
+    row[WATER_RATE] = water.rate;
     // D_eq = (6 V / pi)^(1/3)
     row[DIAMETER] = cbrt(6.0 * row[VOLUME] / MY_PI);
 

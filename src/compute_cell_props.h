@@ -42,6 +42,11 @@ class ComputeCellProps : public Compute {
     WALLTURGOR,
     OUTSIDE,
     GAPVOL,
+    MOISTURE,
+    MOISTURE_RELATIVE,
+    ACTIVITY,
+    PSI_SURFACE,
+    WATER_RATE,
     NCOLUMN
   };
 

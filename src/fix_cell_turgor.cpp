@@ -1,8 +1,9 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor: every N steps each cell (molecule ID) gains or loses water at the rate
-   dM/dt = rho_w L_P A (psi_ext - (P_T - pi)), integrated with an exponential Euler step in the
-   cell's pressure response so that it is stable for any L_P, and spread over the cell's fluid.
+   dM/dt = rho_w L_P A (psi_ext - (P_T - pi)), or through the wall and an air film in series, or
+   along a prescribed X/X0(t) (doc/model.md §5.7-5.10), integrated with an exponential Euler step
+   in the cell's pressure response so that it is stable for any L_P, and spread over its fluid.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_turgor.h"
@@ -13,13 +14,16 @@
 #include "cell_params.h"
 #include "cell_reduce.h"
 #include "cell_restart.h"
+#include "cell_water.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "input.h"
 #include "math_const.h"
 #include "pair.h"
 #include "update.h"
+#include "variable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,15 +33,25 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-static const int NVALUES = 5;            // restart values per cell: ID, mass0, pi0, warned, offset
-static const int RESTART_VERSION = 2;    // 2: the state begins with -version (1: none)
+static const int RESTART_VERSION = 3;    // 3: + solids per cell; 2: begins with -version; 1: none
+
+// restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3)
+static int restart_values(int version)
+{
+  return version >= 3 ? 6 : 5;
+}
 
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), psi(0.0), rhow(1000.0), accel(1.0), tau(0.0), bulk(0.0),
-    kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2),
-    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0)
+    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0),
+    drive(DRIVE_PSI), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
+    air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
+    air_flow(0), area_fraction(1.0), mass_transfer(0.0), ea(0.0), tref(298.15),
+    solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
+    tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
+    fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
+    max_stiffness(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -46,12 +60,20 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
 
-  bool lp_set = false, pi0_set = false;
-  std::string measure = "wall";
-  for (int iarg = 4; iarg < narg; iarg += 2) {
+  bool lp_set = false, pi0_set = false, temp_set = false;
+  std::string measure = "wall", drives;
+  int ndrive = 0;
+  int iarg = 4;
+  // the values after keyword key: n of them, or stop
+  auto values = [&](const std::string &key, int n) {
+    if (iarg + n >= narg)
+      error->all(FLERR, "Fix cell/turgor: missing value after '{}' (expected {})", key, n);
+    return &arg[iarg + 1];
+  };
+  while (iarg < narg) {
     const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "Fix cell/turgor: missing value after '{}'", key);
-    const char *value = arg[iarg + 1];
+    const char *value = values(key, 1)[0];
+    int used = 2;
     if (key == "LP") {
       lp = utils::numeric(FLERR, value, false, lmp);
       lp_set = true;
@@ -59,7 +81,79 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       pi0 = utils::numeric(FLERR, value, false, lmp);
       pi0_set = true;
     } else if (key == "psi") {
-      psi = utils::numeric(FLERR, value, false, lmp);
+      parse_quantity(psi, value);
+      drives += " psi";
+      ndrive++;
+    } else if (key == "air") {
+      char **v = values(key, 3);
+      parse_quantity(air_t, v[0]);
+      parse_quantity(air_rh, v[1]);
+      used = 4;
+      air_flow = strcmp(v[2], "flow") == 0;
+      if (air_flow) {
+        v = values(key, 5);
+        parse_quantity(air_speed, v[3]);
+        parse_quantity(air_length, v[4]);
+        used = 6;
+      } else {
+        parse_quantity(air_hm, v[2]);
+      }
+      // numbers are checked now, variables at every transfer (placeholders pass the check)
+      const double t0 = air_t.name.empty() ? air_t.value : tref;
+      check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0,
+                air_hm.name.empty() ? air_hm.value : 0.0);
+      if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
+        flow_transfer(t0, air_speed.value, air_length.value);
+      if (iarg + used + 1 < narg && strcmp(arg[iarg + used], "area") == 0) {
+        area_fraction = utils::numeric(FLERR, arg[iarg + used + 1], false, lmp);
+        if (!(area_fraction > 0.0 && area_fraction <= 1.0))
+          error->all(FLERR, "Fix cell/turgor: air area fraction = {} must be in (0, 1]",
+                     area_fraction);
+        used += 2;
+      }
+      drive = DRIVE_AIR;
+      drives += " air";
+      ndrive++;
+    } else if (key == "curve") {
+      parse_quantity(curve, value);
+      if (curve.name.empty())
+        error->all(FLERR, "Fix cell/turgor: curve = {} must be an equal-style variable v_name",
+                   value);
+      drive = DRIVE_CURVE;
+      drives += " curve";
+      ndrive++;
+    } else if (key == "temp") {
+      parse_quantity(temp, value);
+      if (temp.name.empty() && !(temp.value > 0.0))
+        error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0", temp.value);
+      temp_set = true;
+    } else if (key == "Ea") {
+      ea = utils::numeric(FLERR, value, false, lmp);
+      if (ea < 0.0)
+        error->all(FLERR, "Fix cell/turgor: activation energy Ea = {} must be >= 0", ea);
+    } else if (key == "Tref") {
+      tref = utils::numeric(FLERR, value, false, lmp);
+      if (!(tref > 0.0))
+        error->all(FLERR, "Fix cell/turgor: reference temperature Tref = {} K must be > 0", tref);
+    } else if (key == "solids") {
+      solids_fraction = utils::numeric(FLERR, value, false, lmp);
+      if (!(solids_fraction > 0.0 && solids_fraction < 1.0))
+        error->all(FLERR,
+                   "Fix cell/turgor: solids = {} must be in (0, 1) (wet-basis mass fraction)",
+                   solids_fraction);
+    } else if (key == "isotherm") {
+      if (strcmp(value, "none") == 0) {
+        isotherm = 0;
+      } else if (strcmp(value, "gab") == 0) {
+        char **v = values(key, 4);
+        gab_xm = utils::numeric(FLERR, v[1], false, lmp);
+        gab_c = utils::numeric(FLERR, v[2], false, lmp);
+        gab_k = utils::numeric(FLERR, v[3], false, lmp);
+        isotherm = 1;
+        used = 5;
+      } else {
+        error->all(FLERR, "Fix cell/turgor: unknown isotherm '{}' (expected gab or none)", value);
+      }
     } else if (key == "rhow") {
       rhow = utils::numeric(FLERR, value, false, lmp);
       if (rhow <= 0.0)
@@ -92,6 +186,20 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       lp = params.nonnegative("turgor_LP");
       pi0 = params.nonnegative("turgor_pi0");
       lp_set = pi0_set = true;
+      // optional drying keys (doc/fix_cell_turgor.md)
+      if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea");
+      if (params.has("turgor_solids")) solids_fraction = params.positive("turgor_solids");
+      if (params.has("turgor_gab_Xm") || params.has("turgor_gab_C") || params.has("turgor_gab_K")) {
+        gab_xm = params.number("turgor_gab_Xm");
+        gab_c = params.number("turgor_gab_C");
+        gab_k = params.number("turgor_gab_K");
+        isotherm = 1;
+      }
+      if (!(solids_fraction < 1.0))
+        error->all(FLERR,
+                   "Fix cell/turgor: {}: turgor_solids = {} must be in (0, 1) (wet-basis mass "
+                   "fraction)",
+                   value, solids_fraction);
     } else if (key == "turgor") {
       measure = value;
     } else if (key == "tau") {
@@ -104,21 +212,102 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     } else {
       error->all(FLERR, "Fix cell/turgor: unknown keyword '{}'", key);
     }
+    iarg += used;
   }
   if (!lp_set) error->all(FLERR, "Fix cell/turgor: wall permeability not set: give 'LP value'");
   if (lp < 0.0) error->all(FLERR, "Fix cell/turgor: wall permeability LP = {} must be >= 0", lp);
   if (!pi0_set) error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
+  if (ndrive > 1)
+    error->all(FLERR, "Fix cell/turgor: give one drive of psi, air and curve, not{}", drives);
+  if (isotherm && solids_fraction == 0.0)
+    error->all(FLERR,
+               "Fix cell/turgor: the sorption isotherm needs the moisture content X: give the dry "
+               "solids with 'solids w_s'");
+  if (isotherm && !(gab_xm > 0.0 && gab_c > 0.0 && gab_k > 0.0 && gab_k <= 1.0))
+    error->all(FLERR,
+               "Fix cell/turgor: GAB isotherm Xm = {}, C = {}, K = {} is impossible: needs Xm > 0, "
+               "C > 0 and 0 < K <= 1 (K > 1 diverges below a_w = 1)",
+               gab_xm, gab_c, gab_k);
+  // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
+  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : Quantity{tref, "", -1};
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
 
   vector_flag = 1;
-  size_vector = 5;
+  size_vector = 7;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
   comm_forward = 1;
+}
+
+/* ----------------------------------------------------------------------
+   a number or v_name; variables are looked up in init() (they may be defined after the fix)
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::parse_quantity(Quantity &in, const char *arg)
+{
+  if (strncmp(arg, "v_", 2) == 0)
+    in = Quantity{0.0, arg + 2, -1};
+  else
+    in = Quantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
+}
+
+void FixCellTurgor::resolve(Quantity &in)
+{
+  if (in.name.empty()) return;
+  in.ivar = input->variable->find(in.name.c_str());
+  if (in.ivar < 0) error->all(FLERR, "Fix cell/turgor: variable {} does not exist", in.name);
+  if (!input->variable->equalstyle(in.ivar))
+    error->all(FLERR, "Fix cell/turgor: variable {} is not equal-style", in.name);
+}
+
+double FixCellTurgor::value(const Quantity &in)
+{
+  return in.name.empty() ? in.value : input->variable->compute_equal(in.ivar);
+}
+
+/* ----------------------------------------------------------------------
+   h_m of air at T flowing at U >= 0 along a sample of length L > 0: laminar flat plate,
+   Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::flow_transfer(double t, double u, double l)
+{
+  if (!(u >= 0.0)) error->all(FLERR, "Fix cell/turgor: air speed U = {} m/s must be >= 0", u);
+  if (!(l > 0.0)) error->all(FLERR, "Fix cell/turgor: sample length L = {} m must be > 0", l);
+  if (!(t > 250.0 && t < 450.0))
+    error->all(FLERR,
+               "Fix cell/turgor: air temperature T = {} K is outside 250-450 K, the range of the "
+               "vapour diffusivity in air behind 'flow' (give h_m instead)",
+               t);
+  const double re = CellWater::reynolds(t, u, l);
+  if (!(re < 5e5))
+    error->all(FLERR,
+               "Fix cell/turgor: air flow U = {} m/s along L = {} m has Re = {:.4g}, beyond the "
+               "laminar flat-plate correlation (Re < 5e5): give h_m instead",
+               u, l, re);
+  return CellWater::plate_transfer(t, u, l);
+}
+
+/* ----------------------------------------------------------------------
+   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, h_m >= 0
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::check_air(double t, double rh, double hm)
+{
+  if (!(t > 0.0)) error->all(FLERR, "Fix cell/turgor: air temperature T = {} K must be > 0", t);
+  if (!(t < CellWater::CRITICAL_T))
+    error->all(FLERR,
+               "Fix cell/turgor: air temperature T = {} K must be below the critical point of "
+               "water, {} K",
+               t, CellWater::CRITICAL_T);
+  if (!(rh > 0.0 && rh <= 1.0))
+    error->all(FLERR, "Fix cell/turgor: relative humidity RH = {} must be in (0, 1]", rh);
+  if (!(hm >= 0.0))
+    error->all(FLERR, "Fix cell/turgor: mass-transfer coefficient hm = {} m/s must be >= 0", hm);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -141,7 +330,9 @@ void FixCellTurgor::init()
   cells->find_cells();
   cells->init();
   for (int c = 0; c < cells->ncell(); c++)
-    state.emplace(cells->id(c), CellState{0.0, pi0, 0, 0.0, 0.0});
+    state.emplace(cells->id(c), CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0});
+  for (Quantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
+    resolve(*in);
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -201,6 +392,40 @@ void FixCellTurgor::evaluate(bool transfer)
   double moved = 0.0;
   max_imbalance = max_stiffness = 0.0;
 
+  // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
+  // X/X0(t) is evaluated at its end
+  const double t = value(temp);
+  if (!(t > 0.0))
+    error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0 (step {})", t,
+               update->ntimestep);
+  temperature = t;
+  // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)) (doc/model.md §5.9)
+  const double lpt = lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, tref) : 1.0);
+  double psi_ext = 0.0, hm = 0.0, rho_sat = 0.0, rho_air = 0.0, target = 0.0;
+  if (drive == DRIVE_PSI) {
+    psi_ext = value(psi);
+  } else if (drive == DRIVE_AIR) {
+    const double tair = value(air_t), rh = value(air_rh);
+    hm = air_flow ? flow_transfer(tair, value(air_speed), value(air_length)) : value(air_hm);
+    mass_transfer = hm;
+    check_air(tair, rh, hm);
+    if (!(t < CellWater::CRITICAL_T))
+      error->all(FLERR,
+                 "Fix cell/turgor: temperature T = {} K must be below the critical point of water, "
+                 "{} K",
+                 t, CellWater::CRITICAL_T);
+    rho_sat = CellWater::saturation_density(t);
+    rho_air = rh * CellWater::saturation_density(tair);
+    // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
+    psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
+  } else {
+    if (transfer) physical_time += h;
+    target = value(curve);
+    if (!(target > 0.0))
+      error->all(FLERR, "Fix cell/turgor: curve X/X0 = {} must be > 0 (physical time {} s)", target,
+                 physical_time);
+  }
+
   for (int c = 0; c < n; c++) {
     const tagint id = cells->id(c);
     const double mass = cells->mass(c);
@@ -219,29 +444,49 @@ void FixCellTurgor::evaluate(bool transfer)
                  id, update->ntimestep, turgor, volume, mass);
 
     if (s.mass0 == 0.0) s.mass0 = mass;
-    double pi;
-    osmotic(id, mass, pi);
-    // psi_ext - psi_cell with psi_cell = P_T - pi (doc/model.md §5.1)
-    const double drive = psi - (turgor - pi);
-    const double conductance = rhow * lp * area;
-    // k = rho_w L_P A d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), dpi/dM = -pi/M
-    const double relax = conductance *
-        std::max(0.0,
-                 (kfluid + cells->sph_turgor(c)) / mass +
-                     (osmotic_law == VANTHOFF ? pi / mass : 0.0));
+    // dry solids S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water
+    if (s.solids == 0.0 && solids_fraction > 0.0)
+      s.solids = s.mass0 * solids_fraction / (1.0 - solids_fraction);
+    double slope;
+    const double pi = osmotic_pressure(s, mass, t, &slope);
+    // psi_cell = P_T - pi (doc/model.md §5.1)
+    const double psi_cell = turgor - pi;
+    double conductance, rate;
+    if (drive == DRIVE_AIR) {
+      // wall and air film in series on the area fraction f (doc/model.md §5.8)
+      const auto air = CellWater::air_flux(psi_cell, t, rhow * lpt, hm, rho_sat, rho_air);
+      conductance = area_fraction * area * air.conductance;
+      rate = -area_fraction * area * air.flux;
+      s.psi_surface = air.psi_surface;
+    } else if (drive == DRIVE_PSI) {
+      // dM/dt = rho_w L_P A (psi_ext - psi_cell) (doc/model.md §5.1)
+      conductance = rhow * lpt * area;
+      rate = conductance * (psi_ext - psi_cell);
+      s.psi_surface = psi_ext;
+    } else {
+      conductance = 0.0;
+      rate = (target * s.mass0 - mass) / h;
+      s.psi_surface = psi_cell;
+    }
+    s.rate = rate;
+    // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
+    const double relax =
+        conductance * std::max(0.0, (kfluid + cells->sph_turgor(c)) / mass + slope);
     const double z = h * relax;
-    max_imbalance = std::max(max_imbalance, fabs(drive));
+    if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
-    check_limit(c, s, turgor, pi);
+    if (drive != DRIVE_CURVE) check_limit(c, s, turgor, pi, pi + psi_ext);
     if (!transfer) continue;
 
-    // exponential Euler: dM = h rho_w L_P A drive (1 - exp(-z)) / z, z = h k (exact when linear)
-    const double dmass = h * conductance * drive * (z > 0.0 ? -expm1(-z) / z : 1.0);
+    // exponential Euler: dM = h r (1 - exp(-z)) / z, z = h k (exact when linear); the curve sets
+    // M = M0 X/X0(t + h)
+    const double dmass = drive == DRIVE_CURVE ? target * s.mass0 - mass
+                                              : h * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
     if (!(mass + dmass > 0.0))
       error->all(FLERR,
                  "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = {} "
                  "kg, change {} kg (psi_ext = {} Pa, turgor P_T = {} Pa, pi = {} Pa)",
-                 id, update->ntimestep, mass, dmass, psi, turgor, pi);
+                 id, update->ntimestep, mass, dmass, psi_ext, turgor, pi);
     scale[c] = dmass / mass;
     moved += dmass;
   }
@@ -256,7 +501,33 @@ void FixCellTurgor::evaluate(bool transfer)
   CellCompat::forward_comm(comm, this);
 
   water_moved += moved;
-  physical_time += h;
+  if (drive != DRIVE_CURVE) physical_time += h;
+}
+
+/* ----------------------------------------------------------------------
+   osmotic pressure of a cell at fluid mass M and temperature T, and slope = -dpi/dM:
+   solutes pi0 (T/Tref) [M0/M with van 't Hoff]; with the GAB isotherm, where it is larger, the
+   sorption pressure -(R T/V_w) ln a_GAB(X), X = M/S (doc/model.md §5.5, §5.10)
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::osmotic_pressure(const CellState &s, double mass, double t,
+                                       double *slope) const
+{
+  const bool vanthoff = osmotic_law == VANTHOFF && s.mass0 > 0.0;
+  // pi = pi0 (T/Tref) M0/M (van 't Hoff, non-permeating solutes)
+  double pi = s.pi0 * (t / tref) * (vanthoff ? s.mass0 / mass : 1.0);
+  if (slope) *slope = vanthoff ? pi / mass : 0.0;
+  if (!isotherm || s.solids <= 0.0) return pi;
+  const CellWater::Gab gab{gab_xm, gab_c, gab_k};
+  const double x = mass / s.solids;
+  const double a = gab.activity(x);
+  if (!(a < 1.0)) return pi;
+  // pi_sorption = -(R T / V_w) ln a_GAB(X), -dpi/dM = (R T / V_w) (da/dX) / (a S)
+  const double sorption = -CellWater::kelvin_potential(a, t);
+  if (sorption <= pi) return pi;
+  if (slope)
+    *slope = CellWater::GAS_R * t / CellWater::WATER_V * gab.activity_slope(x) / (a * s.solids);
+  return sorption;
 }
 
 /* ----------------------------------------------------------------------
@@ -284,7 +555,7 @@ double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
    stop or warn when the cell's thin Neo-Hookean wall cannot hold the turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi)
+void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, double demand)
 {
   const double gt = cells->mean_gt0(c);
   const double area0 = cells->ref_area(c);
@@ -294,7 +565,6 @@ void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi)
   // P_max = (2 G t0 / R0) (6/7) 7^(-1/6) = 0.6197 (2 G t0 / R0) at stretch 7^(1/6)
   const double pmax = 2.0 * gt / r0 * (6.0 / 7.0) * pow(7.0, -1.0 / 6.0);
   const double stretch = sqrt(cells->area(c) / area0);
-  const double demand = pi + psi;
 
   std::string why;
   if (osmotic_law == FIXED && demand > pmax)
@@ -310,7 +580,7 @@ void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi)
       "Fix cell/turgor: cell {} cannot hold its turgor: {}: turgor P_T = {:.6g} Pa, pi = {:.6g} "
       "Pa, psi_ext = {:.6g} Pa, limit-point pressure P_max = 0.6197 (2 G t0 / R0) = {:.6g} Pa "
       "(G t0 = {:.4g} N/m, R0 = {:.4g} m)",
-      cells->id(c), why, turgor, pi, psi, pmax, gt, r0);
+      cells->id(c), why, turgor, pi, demand - pi, pmax, gt, r0);
   if (limit == LIMIT_ERROR) error->all(FLERR, message);
   if (!s.warned && comm->me == 0) error->warning(FLERR, message);
   s.warned = 1;
@@ -330,28 +600,46 @@ bool FixCellTurgor::turgor(tagint cell, double &pt) const
 }
 
 /* ----------------------------------------------------------------------
-   osmotic pressure pi of a cell at fluid mass: fixed pi0, or van 't Hoff pi = pi0 M0 / M;
-   false if this fix does not act on the cell
+   osmotic pressure pi of a cell at fluid mass M and the last evaluation's temperature; false if
+   this fix does not act on the cell
 ------------------------------------------------------------------------- */
 
 bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 {
   auto it = state.find(cell);
   if (it == state.end()) return false;
+  pi = osmotic_pressure(it->second, mass, temperature > 0.0 ? temperature : tref, nullptr);
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   moisture content X = M/S, X/X0 = M/M0, temperature, surface water potential and water flux of
+   a cell at fluid mass M; false if this fix does not act on the cell
+------------------------------------------------------------------------- */
+
+bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
+{
+  auto it = state.find(cell);
+  if (it == state.end()) return false;
   const CellState &s = it->second;
-  pi = (osmotic_law == VANTHOFF && s.mass0 > 0.0) ? s.pi0 * s.mass0 / mass : s.pi0;
+  w.moisture = s.solids > 0.0 ? mass / s.solids : 0.0;
+  w.relative = s.mass0 > 0.0 ? mass / s.mass0 : 0.0;
+  w.temperature = temperature > 0.0 ? temperature : tref;
+  w.psi_surface = s.psi_surface;
+  w.rate = s.rate;
   return true;
 }
 
 /* ----------------------------------------------------------------------
    1 water moved into the cells (kg), 2 physical time (s), 3 cells, 4 max |psi_ext - psi_cell| (Pa),
-   5 max h k: an explicit update would be unstable above 2
+   5 max h k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s)
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved, physical_time, (double) cells->ncell(), max_imbalance,
-                           max_stiffness};
+  const double values[] = {water_moved,   physical_time, (double) cells->ncell(),
+                           max_imbalance, max_stiffness, temperature,
+                           mass_transfer};
   return values[n];
 }
 
@@ -369,13 +657,17 @@ int FixCellTurgor::modify_param(int narg, char **arg)
                "keyword of every fix)",
                key);
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
-  const double value = utils::numeric(FLERR, arg[1], false, lmp);
+  const double value = key == "psi" ? 0.0 : utils::numeric(FLERR, arg[1], false, lmp);
   if (key == "LP") {
     if (value < 0.0)
       error->all(FLERR, "Fix_modify cell/turgor: wall permeability LP = {} must be >= 0", value);
     lp = value;
   } else if (key == "psi") {
-    psi = value;
+    if (drive != DRIVE_PSI)
+      error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
+                 drive == DRIVE_AIR ? "air" : "curve");
+    parse_quantity(psi, arg[1]);
+    resolve(psi);
   } else {
     if (value <= 0.0) error->all(FLERR, "Fix_modify cell/turgor: accel = {} must be > 0", value);
     accel = value;
@@ -397,6 +689,7 @@ void FixCellTurgor::write_restart(FILE *fp)
     list.push_back(kv.second.pi0);
     list.push_back(kv.second.warned);
     list.push_back(kv.second.offset);
+    list.push_back(kv.second.solids);
   }
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -421,23 +714,35 @@ void FixCellTurgor::restart(char *buf)
   physical_time = list[1];
   water_moved = list[2];
   state.clear();
-  bool other_pi0 = false;
+  bool other_pi0 = false, other_solids = false;
+  const int nvalues = restart_values(version);
   for (int k = 0; k < n; k++) {
-    const double *v = &list[3 + NVALUES * k];
+    const double *v = &list[3 + nvalues * k];
     // version 1 files written before the offset was stored had 4 values per cell: caught here
     if (!(v[0] >= 1.0 && v[0] == floor(v[0]) && (v[3] == 0.0 || v[3] == 1.0)))
       error->all(FLERR,
                  "Fix cell/turgor: the restart file's state (format version {}) is not valid at "
                  "cell {} of {}: ID = {}, warned = {}",
                  version, k + 1, n, v[0], v[3]);
-    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], 0.0};
+    // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
+    const double solids = version >= 3 ? v[5] : 0.0;
+    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0};
     other_pi0 = other_pi0 || v[2] != pi0;
+    other_solids = other_solids ||
+        (solids > 0.0 && solids_fraction > 0.0 &&
+         fabs(solids - v[1] * solids_fraction / (1.0 - solids_fraction)) > 1e-12 * solids);
   }
   if (other_pi0 && comm->me == 0)
     error->warning(FLERR,
                    "Fix cell/turgor: cells continue with the osmotic pressure pi0 stored in the "
                    "restart file, not pi0 = {}",
                    pi0);
+  if (other_solids && comm->me == 0)
+    error->warning(
+        FLERR,
+        "Fix cell/turgor: cells continue with the dry solids stored in the restart file, "
+        "not those of solids = {}",
+        solids_fraction);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor: water transfer through the cell wall driven by turgor, osmotic pressure and the
-   external water potential (doc/model.md §5)
+   external water potential, or air of a given temperature and humidity (doc/model.md §5)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_CELL_TURGOR_H
@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -32,24 +33,54 @@ class FixCellTurgor : public Fix {
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
 
+  // the water of a cell as the last evaluation saw it (compute cell/props columns 18-22)
+  struct Water {
+    double moisture;       // X = M / S, dry basis (kg/kg); 0 without solids
+    double relative;       // X / X0 = M / M0
+    double temperature;    // T (K)
+    double psi_surface;    // water potential just outside the wall (Pa)
+    double rate;           // dM/dt into the cell (kg/s)
+  };
+
   bool osmotic(tagint cell, double mass, double &pi) const;
   bool turgor(tagint cell, double &pt) const;
+  bool water(tagint cell, double mass, Water &w) const;
 
  protected:
   enum Osmotic { FIXED = 0, VANTHOFF = 1 };
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
+  enum Drive { DRIVE_PSI = 0, DRIVE_AIR = 1, DRIVE_CURVE = 2 };
   struct CellState {
-    double mass0;     // fluid mass when the fix first saw the cell (kg)
-    double pi0;       // osmotic pressure at mass0 (Pa)
-    int warned;       // 1 once the limit-point warning was printed
-    double offset;    // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
-    double turgor;    // turgor P_T of the last evaluation (Pa), set again by setup()
+    double mass0;                // fluid mass when the fix first saw the cell (kg)
+    double pi0;                  // osmotic pressure at mass0 and Tref (Pa)
+    int warned;                  // 1 once the limit-point warning was printed
+    double offset;               // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
+    double solids;               // dry solids S (kg), 0 without 'solids'
+    double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
+    double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
+  };
+  // a number, or an equal-style variable v_name evaluated at every transfer
+  struct Quantity {
+    double value;
+    std::string name;    // variable name, empty for a number
+    int ivar;
   };
 
-  double lp, pi0, psi, rhow, accel;
-  double tau;       // MD time of the running mean of the offset (s), 0 = 100 N dt
-  double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
-  double kfluid;    // K in use
+  double lp, pi0, rhow, accel;
+  int drive;
+  Quantity psi, temp, air_t, air_rh, air_hm, curve;
+  Quantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
+  int air_flow;
+  double area_fraction;      // share of the wall area in contact with the air
+  double mass_transfer;      // h_m of the last evaluation (m/s)
+  double ea, tref;           // activation energy of L_P (J/mol), reference temperature (K)
+  double solids_fraction;    // wet-basis solids fraction w_s, 0 = none
+  int isotherm;              // 1: GAB isotherm below
+  double gab_xm, gab_c, gab_k;
+  double temperature;    // cell temperature T of the last evaluation (K)
+  double tau;            // MD time of the running mean of the offset (s), 0 = 100 N dt
+  double bulk;           // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
+  double kfluid;         // K in use
   int osmotic_law, limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
   std::map<tagint, CellState> state;
@@ -58,9 +89,15 @@ class FixCellTurgor : public Fix {
   double physical_time, water_moved, max_imbalance, max_stiffness;
 
   void evaluate(bool transfer);
-  void check_limit(int c, CellState &s, double turgor, double pi);
+  void check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
+  double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
+  void parse_quantity(Quantity &in, const char *arg);
+  void resolve(Quantity &in);
+  double value(const Quantity &in);
+  void check_air(double t, double rh, double hm);
+  double flow_transfer(double t, double u, double l);
 };
 
 }    // namespace LAMMPS_NS

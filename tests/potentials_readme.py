@@ -84,7 +84,29 @@ QUOTES = [
      [exact(lambda p: p["wallwall_sigma"] * 1e6),
       rounded(lambda p: 2 ** (1 / 6) * p["wallwall_sigma"] * 1e6)]),
     (r"eps = " + NUM + r" J carries", "apple", [exact(lambda p: p["wallwall_eps"])]),
+    (r"With `turgor_solids` = " + NUM + r" \(apple is about 14 % solids, wet basis\)\s+the fresh "
+     r"cell's moisture content is X0 = \(1 − " + NUM + r"\)/" + NUM + r" = " + NUM + " kg/kg",
+     "apple",
+     [exact(lambda p: p["turgor_solids"]), exact(lambda p: p["turgor_solids"]),
+      exact(lambda p: p["turgor_solids"]),
+      rounded(lambda p: (1 - p["turgor_solids"]) / p["turgor_solids"])]),
+    (r"Arrhenius with `turgor_Ea` = " + NUM + r" kJ/mol[\s\S]*?L_P at 60 °C is " + NUM
+     + r" × its 25 °C value", "apple",
+     [exact(lambda p: p["turgor_Ea"] / 1e3),
+      rounded(lambda p: math.exp(-p["turgor_Ea"] / 8.314462618 * (1 / 333.15 - 1 / 298.15)))]),
+    (r"Xm = " + NUM + r" kg/kg lies inside", "apple", [exact(lambda p: p["turgor_gab_Xm"])]),
+    (r"C = " + NUM + r" and K = " + NUM + r" are typical", "apple",
+     [exact(lambda p: p["turgor_gab_C"]), exact(lambda p: p["turgor_gab_K"])]),
+    (r"equilibrium moisture content at a_w = 0\.3 is X = " + NUM + r" kg/kg, and a_w = 1 is "
+     r"reached at\s+X = " + NUM + " kg/kg", "apple",
+     [rounded(lambda p: gab(p, 0.3)), rounded(lambda p: gab(p, 1.0))]),
 ]
+
+
+def gab(p, a):
+    """GAB isotherm X(a) of the file's turgor_gab_* keys (doc/model.md 5.10)."""
+    y = p["turgor_gab_K"] * a
+    return p["turgor_gab_Xm"] * p["turgor_gab_C"] * y / ((1 - y) * (1 - y + p["turgor_gab_C"] * y))
 
 
 def read_params(path):

@@ -4,13 +4,16 @@
   restart_version.py IN OUT newer STYLE        the STYLE payload claims the next format version
   restart_version.py IN OUT unversioned STYLE...  the STYLE payloads lose their version marker:
                                                the layout written before versions (version 1)
+  restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
+                                               version 2 (5 values per cell: no dry solids)
 
 STYLE is cell/sph, cell/wall, cell/neohookean or cell/turgor (unversioned: not cell/sph, whose
 version 1 also lacks the per-pair wall flag). A payload is found by its style name as LAMMPS
 writes it (int length, name, NUL) followed by the marker -version (src/*.cpp RESTART_VERSION):
 an int for pair cell/sph, a double for pair cell/wall and bond cell/neohookean, a double after
 the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
-then.
+then. A fix cell/turgor payload of version 3 (6 values per cell) loses its dry solids (the 6th)
+when made unversioned or older, so that it has the layout of versions 1 and 2 (5 per cell).
 """
 import struct
 import sys
@@ -38,18 +41,37 @@ def find_marker(data, style):
     return hits[0]
 
 
+def turgor_to_version2(data, at):
+    """Drop the 6th value per cell (dry solids) of the version-3 cell/turgor payload whose marker
+    is at offset at: count, physical time, water moved, then ID mass0 pi0 warned offset solids."""
+    (count,) = struct.unpack_from("=d", data, at + 8)
+    n = int(count)
+    cells = at + 8 * 4
+    values = list(struct.unpack_from(f"={6 * n}d", data, cells))
+    kept = [v for k, v in enumerate(values) if k % 6 != 5]
+    data[cells:cells + 8 * 6 * n] = struct.pack(f"={5 * n}d", *kept)
+    (size,) = struct.unpack_from("=i", data, at - 4)
+    struct.pack_into("=i", data, at - 4, size - 8 * n)
+    struct.pack_into("=d", data, at, -2.0)
+
+
 def main():
-    if len(sys.argv) < 5 or sys.argv[3] not in ("newer", "unversioned"):
+    if len(sys.argv) < 5 or sys.argv[3] not in ("newer", "unversioned", "older"):
         sys.exit(__doc__)
     src, dst, mode, styles = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
     data = bytearray(open(src, "rb").read())
     for style in styles:
-        if style not in LAYOUT or (mode == "unversioned" and style == "cell/sph"):
+        if style not in LAYOUT or (mode == "unversioned" and style == "cell/sph") or (
+                mode == "older" and style != "cell/turgor"):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
         version = int(round(-marker))
-        if mode == "newer":
+        if style == "cell/turgor" and mode != "newer" and version == 3:
+            turgor_to_version2(data, at)
+        if mode == "older":
+            print(f"restart_version.py: {style} payload version {version} -> 2")
+        elif mode == "newer":
             struct.pack_into(fmt, data, at, type(marker)(-(version + 1)))
             print(f"restart_version.py: {style} payload version {version} -> {version + 1}")
         else:

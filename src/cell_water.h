@@ -1,0 +1,148 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   Water outside and inside a drying cell (doc/model.md §5.7-5.10), as pure functions used by
+   fix cell/turgor: Kelvin's relation, the saturation vapour density of water, the Arrhenius law
+   of L_P, the GAB sorption isotherm, and the exact surface water potential of the wall in series
+   with an air film.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CELL_WATER_H
+#define LMP_CELL_WATER_H
+
+#include <algorithm>
+#include <cmath>
+
+namespace CellWater {
+
+constexpr double GAS_R = 8.314462618;     // molar gas constant R (J mol^-1 K^-1), CODATA 2018
+constexpr double WATER_V = 18.07e-6;      // molar volume of liquid water V_w (m^3 mol^-1), 25 C
+constexpr double WATER_M = 18.015e-3;     // molar mass of water M_w (kg mol^-1)
+constexpr double CRITICAL_T = 647.096;    // critical temperature of water (K), Wagner & Pruss
+
+// water potential psi (Pa) of water at activity a and temperature T: Kelvin, psi = (R T / V_w) ln a
+inline double kelvin_potential(double a, double t)
+{
+  return GAS_R * t / WATER_V * log(a);
+}
+
+// water activity a at water potential psi (Pa): a = exp(psi V_w / (R T)), not linearised
+inline double activity(double psi, double t)
+{
+  return exp(psi * WATER_V / (GAS_R * t));
+}
+
+// saturation vapour pressure over liquid water (Pa), 273.16 K < T < 647.096 K:
+// ln(p/pc) = (Tc/T)(a1 v + a2 v^1.5 + a3 v^3 + a4 v^3.5 + a5 v^4 + a6 v^7.5), v = 1 - T/Tc
+// (Wagner & Pruss 1993, J. Phys. Chem. Ref. Data 22, 783; doc/model.md §5.8)
+inline double saturation_pressure(double t)
+{
+  const double v = 1.0 - t / CRITICAL_T;
+  const double sum = -7.85951783 * v + 1.84408259 * pow(v, 1.5) - 11.7866497 * pow(v, 3.0) +
+      22.6807411 * pow(v, 3.5) - 15.9618719 * pow(v, 4.0) + 1.80122502 * pow(v, 7.5);
+  return 22.064e6 * exp(CRITICAL_T / t * sum);
+}
+
+// saturation vapour density (kg m^-3), ideal gas: rho_v,sat = p_sat M_w / (R T)
+inline double saturation_density(double t)
+{
+  return saturation_pressure(t) * WATER_M / (GAS_R * t);
+}
+
+// Arrhenius factor of L_P: L_P(T) / L_P(Tref) = exp(-(Ea/R)(1/T - 1/Tref))
+inline double arrhenius(double ea, double t, double tref)
+{
+  return exp(-ea / GAS_R * (1.0 / t - 1.0 / tref));
+}
+
+// dry air at 1 atm: viscosity (Sutherland's law, 1.716e-5 Pa s at 273.15 K, S = 110.4 K), density
+// (ideal gas, M_air = 28.965e-3 kg/mol) and the diffusivity of water vapour in air (Bolz & Tuve
+// 1976, 250-450 K): D = -2.775e-6 + 4.479e-8 T + 1.656e-10 T^2 m^2/s (doc/model.md §5.8)
+inline double air_viscosity(double t)
+{
+  return 1.716e-5 * pow(t / 273.15, 1.5) * (273.15 + 110.4) / (t + 110.4);
+}
+inline double air_density(double t)
+{
+  return 101325.0 * 28.965e-3 / (GAS_R * t);
+}
+inline double vapour_diffusivity(double t)
+{
+  return -2.775e-6 + 4.479e-8 * t + 1.656e-10 * t * t;
+}
+// Reynolds number U L / nu of air at T flowing at U along a sample of length L
+inline double reynolds(double t, double u, double l)
+{
+  return u * l * air_density(t) / air_viscosity(t);
+}
+// mass-transfer coefficient of a laminar flat plate averaged over its length L (Re < 5e5):
+// Sh = h_m L / D = 0.664 Re^(1/2) Sc^(1/3), Sc = nu / D (Chilton-Colburn analogy)
+inline double plate_transfer(double t, double u, double l)
+{
+  const double nu = air_viscosity(t) / air_density(t), d = vapour_diffusivity(t);
+  return 0.664 * sqrt(reynolds(t, u, l)) * cbrt(nu / d) * d / l;
+}
+
+// GAB sorption isotherm X(a) = Xm C K a / ((1 - K a)(1 - K a + C K a)), X dry basis (kg/kg)
+struct Gab {
+  double xm, c, k;
+
+  double moisture(double a) const
+  {
+    const double y = k * a;
+    return xm * c * y / ((1.0 - y) * (1.0 - y + c * y));
+  }
+  // inverse: y = K a is the root in (0, 1) of X (C - 1) y^2 + (Xm C - X (C - 2)) y - X = 0,
+  // written without cancellation as y = 2 X / (b + sqrt(b^2 + 4 X^2 (C - 1))), b = Xm C - X (C - 2)
+  double activity(double x) const
+  {
+    const double b = xm * c - x * (c - 2.0);
+    return 2.0 * x / (b + sqrt(b * b + 4.0 * x * x * (c - 1.0))) / k;
+  }
+  // da/dX = 1 / (dX/da), dX/da = K X (1/y - D'/D), D = (1 - y)(1 + (C - 1) y)
+  double activity_slope(double x) const
+  {
+    const double y = k * activity(x);
+    const double d = (1.0 - y) * (1.0 + (c - 1.0) * y);
+    const double dd = (c - 2.0) - 2.0 * (c - 1.0) * y;
+    return 1.0 / (k * x * (1.0 / y - dd / d));
+  }
+};
+
+// The wall (conductance gw = rho_w L_P, kg m^-2 s^-1 Pa^-1) in series with an air film
+// (h_m, m/s): the flux continuity gw (psi_cell - psi_s) = h_m (rho_sat a(psi_s) - rho_air) for the
+// surface water potential psi_s, solved exactly (doc/model.md §5.8)
+struct AirFlux {
+  double psi_surface;    // psi_s (Pa)
+  double flux;           // J, out of the cell (kg m^-2 s^-1)
+  double conductance;    // dJ/dpsi_cell = 1 / (1/gw + 1/g_air), g_air = h_m rho_sat a V_w/(R T)
+};
+
+// rho_sat = rho_v,sat(T_s) of the surface, rho_air = RH rho_v,sat(T_air) > 0 of the air
+inline AirFlux air_flux(double psi_cell, double t, double gw, double hm, double rho_sat,
+                        double rho_air)
+{
+  const double rt = GAS_R * t / WATER_V;
+  if (gw == 0.0 && hm == 0.0) return {psi_cell, 0.0, 0.0};
+  // g(u) = gw (psi_cell - rt u) - h_m (rho_sat e^u - rho_air), u = ln a_s: decreasing and concave,
+  // root between u_cell = psi_cell / rt and u_air = ln(rho_air / rho_sat); Newton from the larger
+  // (where g <= 0) converges monotonically to it without leaving the bracket
+  const double ucell = psi_cell / rt, uair = log(rho_air / rho_sat);
+  const double lo = std::min(ucell, uair);
+  double u = std::max(ucell, uair);
+  for (int iter = 0; iter < 100; iter++) {
+    const double vap = hm * rho_sat * exp(u);
+    const double g = gw * (psi_cell - rt * u) - (vap - hm * rho_air);
+    const double step = g / (gw * rt + vap);
+    u = std::max(lo, u + step);
+    if (fabs(step) <= 1e-15 * (1.0 + fabs(u))) break;
+  }
+  const double vap = hm * rho_sat * exp(u);
+  const double gair = vap / rt;
+  const double conductance = (gw > 0.0 && gair > 0.0) ? gw * gair / (gw + gair) : 0.0;
+  // J = h_m (rho_sat a_s - rho_air) (doc/model.md §5.8)
+  return {rt * u, vap - hm * rho_air, conductance};
+}
+
+}    // namespace CellWater
+
+#endif
