@@ -380,14 +380,14 @@ void FixCellTurgor::end_of_step()
 
 /* ----------------------------------------------------------------------
    per-cell turgor, osmotic pressure and water flux; with transfer, advance each cell's fluid mass
-   over h = accel N dt of physical time and spread it over the cell's fluid atoms
+   over dtw = accel N dt of physical time and spread it over the cell's fluid atoms
 ------------------------------------------------------------------------- */
 
 void FixCellTurgor::evaluate(bool transfer)
 {
   cells->reduce(gt0.empty() ? nullptr : gt0.data());
   const int n = cells->ncell();
-  const double h = accel * nevery * update->dt;
+  const double dtw = accel * nevery * update->dt;
   std::vector<double> scale(n, 0.0);
   double moved = 0.0;
   max_imbalance = max_stiffness = 0.0;
@@ -419,7 +419,7 @@ void FixCellTurgor::evaluate(bool transfer)
     // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
     psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
   } else {
-    if (transfer) physical_time += h;
+    if (transfer) physical_time += dtw;
     target = value(curve);
     if (!(target > 0.0))
       error->all(FLERR, "Fix cell/turgor: curve X/X0 = {} must be > 0 (physical time {} s)", target,
@@ -465,23 +465,23 @@ void FixCellTurgor::evaluate(bool transfer)
       s.psi_surface = psi_ext;
     } else {
       conductance = 0.0;
-      rate = (target * s.mass0 - mass) / h;
+      rate = (target * s.mass0 - mass) / dtw;
       s.psi_surface = psi_cell;
     }
     s.rate = rate;
     // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
     const double relax =
         conductance * std::max(0.0, (kfluid + cells->sph_turgor(c)) / mass + slope);
-    const double z = h * relax;
+    const double z = dtw * relax;
     if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
     if (drive != DRIVE_CURVE) check_limit(c, s, turgor, pi, pi + psi_ext);
     if (!transfer) continue;
 
-    // exponential Euler: dM = h r (1 - exp(-z)) / z, z = h k (exact when linear); the curve sets
-    // M = M0 X/X0(t + h)
+    // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
+    // M = M0 X/X0(t + dtw)
     const double dmass = drive == DRIVE_CURVE ? target * s.mass0 - mass
-                                              : h * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
+                                              : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
     if (!(mass + dmass > 0.0))
       error->all(FLERR,
                  "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = {} "
@@ -501,7 +501,7 @@ void FixCellTurgor::evaluate(bool transfer)
   CellCompat::forward_comm(comm, this);
 
   water_moved += moved;
-  if (drive != DRIVE_CURVE) physical_time += h;
+  if (drive != DRIVE_CURVE) physical_time += dtw;
 }
 
 /* ----------------------------------------------------------------------
@@ -534,7 +534,7 @@ double FixCellTurgor::osmotic_pressure(const CellState &s, double mass, double t
    the turgor that drives the flux. turgor sph: the mean SPH pressure. turgor wall: the mean SPH
    pressure minus its running mean offset from the wall load, so that the steady state is the wall
    load P_W = pi + psi_ext while each transfer sees the fluid's instantaneous, smooth response (the
-   wall load alone carries the wall's ringing into the mass at large h k); the mean advances on
+   wall load alone carries the wall's ringing into the mass at large dtw k); the mean advances on
    transfer steps only, so a run split in two continues as one
 ------------------------------------------------------------------------- */
 
@@ -632,7 +632,7 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 /* ----------------------------------------------------------------------
    1 water moved into the cells (kg), 2 physical time (s), 3 cells, 4 max |psi_ext - psi_cell| (Pa),
-   5 max h k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s)
+   5 max dtw k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s)
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
