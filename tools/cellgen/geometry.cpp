@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <random>
@@ -316,16 +317,20 @@ namespace {
                   const BuildParams &params)
   {
     const double r = cell.radius;
-    const std::vector<Vec3> fluid = params.withFluid
-        ? fluidLattice(r - params.spacing.gap, params.spacing.dx)
-        : std::vector<Vec3>();
+    const bool sphere = params.shape == Vec3::Ones();
+    const std::vector<Vec3> fluid = !params.withFluid ? std::vector<Vec3>()
+        : sphere ? fluidLattice(r - params.spacing.gap, params.spacing.dx)
+                 : fluidEllipsoid(r * params.shape, params.spacing.gap, params.spacing.dx);
     if (fluid.empty() && params.withFluid)
       throw std::runtime_error("cell " + std::to_string(molecule) + " has no fluid particle");
-    // fluid fills the volume 4/3 pi R^3 enclosed by the wall at the reference density
+    // fluid fills the volume 4/3 pi R^3 enclosed by the wall at the reference density (an
+    // ellipsoid's R is the equal-volume radius: 4/3 pi R^3 = 4/3 pi a b c)
     const double fluidMass =
         params.rho0 * 4.0 / 3.0 * kPi * r * r * r / std::max<size_t>(fluid.size(), 1);
-    // wall shell of area 4 pi R^2 and the given thickness at the reference density
-    const double wallMass = params.wallMass.value_or(params.rho0 * 4.0 * kPi * r * r *
+    // wall shell of area 4 pi R^2 (ellipsoid: its exact area) and the given thickness at the
+    // reference density
+    const double shellArea = sphere ? 4.0 * kPi * r * r : ellipsoidArea(r * params.shape);
+    const double wallMass = params.wallMass.value_or(params.rho0 * shellArea *
                                                      params.wallThickness / unit.points.size());
     for (const Vec3 &x : fluid)
       sys.particles.push_back({molecule, kFluid, cell.centre + x, fluidMass});
@@ -550,6 +555,46 @@ std::vector<Vec3> fluidLattice(double radius, double dx)
   return points;
 }
 
+Surface ellipsoidSurface(const Surface &unitSphere, const Vec3 &axes)
+{
+  Surface s = unitSphere;
+  for (Vec3 &x : s.points) x = x.cwiseProduct(axes);
+  return s;
+}
+
+std::vector<Vec3> fluidEllipsoid(const Vec3 &axes, double gap, double dx)
+{
+  // x inside the ellipsoid E scaled by f = 1 - gap / c_min about its centre is at least gap from
+  // the surface of E: the ball of radius (1 - f) c_min around x lies in f E + (1 - f) E = E
+  const double f = 1.0 - gap / axes.minCoeff();
+  std::vector<Vec3> points;
+  if (f <= 0.0) return points;
+  const Vec3 inner = f * axes;
+  const int k = static_cast<int>(inner.maxCoeff() / dx) + 1;
+  for (int i = -k; i <= k; ++i)
+    for (int j = -k; j <= k; ++j)
+      for (int l = -k; l <= k; ++l) {
+        const Vec3 x(dx * i, dx * j, dx * l);
+        if (x.cwiseQuotient(inner).squaredNorm() <= 1.0) points.push_back(x);
+      }
+  return points;
+}
+
+double ellipsoidArea(const Vec3 &axes)
+{
+  // a >= b >= c: S = 2 pi c^2 + 2 pi a b / sin(phi) (E(phi, k) sin^2(phi) + F(phi, k) cos^2(phi)),
+  // cos(phi) = c / a, k^2 = a^2 (b^2 - c^2) / (b^2 (a^2 - c^2))
+  Vec3 s = axes;
+  std::sort(s.data(), s.data() + 3, std::greater<double>());
+  const double a = s[0], b = s[1], c = s[2];
+  if (a - c <= 1e-14 * a) return 4.0 * kPi * a * a;
+  const double phi = std::acos(c / a);
+  const double k = std::sqrt(a * a * (b * b - c * c) / (b * b * (a * a - c * c)));
+  const double sn = std::sin(phi), cs = std::cos(phi);
+  return 2.0 * kPi * c * c +
+      2.0 * kPi * a * b / sn * (std::ellint_2(k, phi) * sn * sn + std::ellint_1(k, phi) * cs * cs);
+}
+
 std::vector<CellSpec> cellLattice(const std::array<int, 3> &counts, double spacing, double radius,
                                   double spread, std::uint64_t seed)
 {
@@ -565,11 +610,12 @@ std::vector<CellSpec> cellLattice(const std::array<int, 3> &counts, double spaci
   return cells;
 }
 
-void checkNoOverlap(const std::vector<CellSpec> &cells)
+void checkNoOverlap(const std::vector<CellSpec> &cells, double extent)
 {
   for (size_t i = 0; i < cells.size(); ++i)
     for (size_t j = i + 1; j < cells.size(); ++j)
-      if ((cells[i].centre - cells[j].centre).norm() <= cells[i].radius + cells[j].radius)
+      if ((cells[i].centre - cells[j].centre).norm() <=
+          extent * (cells[i].radius + cells[j].radius))
         throw std::runtime_error("cells " + std::to_string(i + 1) + " and " +
                                  std::to_string(j + 1) + " overlap; increase --spacing");
 }
@@ -582,8 +628,8 @@ System buildSystem(const Surface &unit, const std::vector<CellSpec> &cells,
   sys.hi = Vec3::Constant(-INFINITY);
   for (size_t k = 0; k < cells.size(); ++k) {
     appendCell(sys, unit, cells[k], static_cast<int>(k + 1), params);
-    sys.lo = sys.lo.cwiseMin(cells[k].centre - Vec3::Constant(cells[k].radius));
-    sys.hi = sys.hi.cwiseMax(cells[k].centre + Vec3::Constant(cells[k].radius));
+    sys.lo = sys.lo.cwiseMin(cells[k].centre - cells[k].radius * params.shape);
+    sys.hi = sys.hi.cwiseMax(cells[k].centre + cells[k].radius * params.shape);
   }
   sys.lo -= Vec3::Constant(params.boxMargin);
   sys.hi += Vec3::Constant(params.boxMargin);
