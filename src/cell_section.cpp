@@ -73,17 +73,32 @@ bool measure(const double *tri, const tagint *ids, int ntri, const double *p, co
              const double *e1, const double *e2, Shape &shape)
 {
   shape = Shape();
+  // each atom's height above the plane, once per atom ID: a corner's copies in its triangles
+  // differ by round-off, and must fall on the same side
+  std::vector<std::pair<tagint, int>> corner(3 * (size_t) ntri);
+  for (int k = 0; k < 3 * ntri; k++) corner[k] = {ids[k], k};
+  std::sort(corner.begin(), corner.end());
+  std::vector<double> height(3 * (size_t) ntri);
+  double d[3];
+  for (size_t k = 0; k < corner.size(); k++) {
+    const size_t head = k > 0 && corner[k].first == corner[k - 1].first ? k - 1 : k;
+    if (head == k) {
+      const double *x = tri + 3 * corner[k].second;
+      for (int dim = 0; dim < 3; dim++) d[dim] = x[dim] - p[dim];
+      height[corner[k].second] = dot(n, d);
+    } else {
+      height[corner[k].second] = height[corner[head].second];
+      corner[k].second = corner[head].second;
+    }
+  }
+
   std::vector<Piece> pieces;
   for (int t = 0; t < ntri; t++) {
     const double *x = tri + 9 * t;
     const tagint *id = ids + 3 * t;
-    double s[3], d[3];
+    const double *s = &height[3 * (size_t) t];
     bool above[3];
-    for (int k = 0; k < 3; k++) {
-      for (int dim = 0; dim < 3; dim++) d[dim] = x[3 * k + dim] - p[dim];
-      s[k] = dot(n, d);
-      above[k] = s[k] >= 0.0;
-    }
+    for (int k = 0; k < 3; k++) above[k] = s[k] >= 0.0;
     if (above[0] == above[1] && above[1] == above[2]) continue;
     Piece piece{};
     for (int k = 0; k < 3; k++) {
