@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    The section of a closed, outward triangulated wall by a plane and the 2-D shape descriptors of
    image analysis (ImageJ "Measure" with "Shape descriptors", Feret's diameter and "Fit ellipse")
-   of that section: doc/compute_cell_shape.md, doc/model.md §5.3
+   of that section: doc/compute_cell_shape.md, doc/model.md §5.7
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_SECTION_H

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    compute cell/shape: one row per cell of the 2-D descriptors of a section through it, as image
-   analysis reports them, and of the wall's wrinkling (doc/compute_cell_shape.md, doc/model.md §5.3)
+   analysis reports them, and of the wall's wrinkling (doc/compute_cell_shape.md, doc/model.md §5.7)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_COMPUTE_CELL_SHAPE_H
