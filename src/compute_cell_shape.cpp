@@ -26,6 +26,9 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
+// principal lengths closer than this fraction of the largest count as equal (plane principal)
+static constexpr double DEGENERATE = 1e-9;
+
 /* ---------------------------------------------------------------------- */
 
 ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
@@ -104,6 +107,11 @@ void ComputeCellShape::compute_array()
 
   for (int c = 0; c < n; c++) {
     array[c][ID] = cells->id(c);
+    if (array[c][LOOPS] == -2.0)
+      error->all(FLERR,
+                 "Compute cell/shape: cell {} encloses no volume: its wall triangles are not a "
+                 "closed, outward surface",
+                 cells->id(c));
     if (array[c][LOOPS] < 0.0)
       error->all(FLERR,
                  "Compute cell/shape: the section of cell {} does not close: its wall triangles "
@@ -116,8 +124,8 @@ void ComputeCellShape::compute_array()
 }
 
 /* ----------------------------------------------------------------------
-   one cell's row (doc/compute_cell_shape.md); LOOPS or HULLAREA -1 if the section or the hull
-   failed
+   one cell's row (doc/compute_cell_shape.md); LOOPS -2 if the wall encloses no volume, LOOPS or
+   HULLAREA -1 if the section or the hull failed
 ------------------------------------------------------------------------- */
 
 void ComputeCellShape::measure(int c, double *row)
@@ -143,16 +151,30 @@ void ComputeCellShape::measure(int c, double *row)
     // wall area A = 1/2 sum |(b - a) x (c - a)|
     wallarea += 0.5 * (b - a).cross(cc - a).norm();
   }
+  if (!(volume > 0.0)) {
+    row[LOOPS] = -2.0;
+    return;
+  }
   const Eigen::Vector3d centre = first / volume;
 
   // the plane: normal n, in-plane axes e1, e2 with e1 x e2 = n
   Eigen::Vector3d n, e1, e2;
   if (plane == PLANE_PRINCIPAL) {
-    // normal along the shortest principal axis of the volume, e1 along the longest
+    // normal along the shortest principal axis of the volume, e1 along the longest; where the two
+    // shortest are equal to round-off (a spheroid, a sphere) the normal is the part of the z axis
+    // (y if z lies along e1) normal to e1, so that every rank and run picks the same plane
     const Eigen::Matrix3d central = second - volume * centre * centre.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(central);
-    n = eig.eigenvectors().col(0);
+    const Eigen::Vector3d &lambda = eig.eigenvalues();
     e1 = eig.eigenvectors().col(2);
+    if (lambda[1] - lambda[0] > DEGENERATE * lambda[2])
+      n = eig.eigenvectors().col(0);
+    else {
+      if (lambda[2] - lambda[0] <= DEGENERATE * lambda[2]) e1 = Eigen::Vector3d::UnitX();
+      const Eigen::Vector3d axis =
+          std::abs(e1[2]) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+      n = (axis - axis.dot(e1) * e1).normalized();
+    }
     int big = 0;
     n.cwiseAbs().maxCoeff(&big);
     if (n[big] < 0.0) n = -n;
