@@ -26,12 +26,15 @@ constexpr const char *kUsage =
     "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--mesh icosahedral|spiral]\n"
     "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
     "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
-    "               [--margin F=0.5] [--ellipsoid A:B:C | --elongation E] --out FILE.data\n"
+    "               [--margin F=0.5] [--ellipsoid A:B:C | --elongation E]\n"
+    "               [--map affine|conformal] --out FILE.data\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
     "--ellipsoid A:B:C: semi-axes along x, y, z (replaces --radius); --elongation E: prolate along "
     "x,\n"
-    "            a/b = E, with the volume of the sphere of --radius.\n"
+    "            a/b = E, with the volume of the sphere of --radius; --map: how the sphere mesh\n"
+    "            goes onto the ellipsoid (affine x -> (a x, b y, c z), or conformal for "
+    "spheroids).\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
 
 struct UsageError : std::runtime_error {
@@ -55,6 +58,7 @@ struct Options {
   bool radiusGiven = false;
   std::optional<Vec3> ellipsoid;    // --ellipsoid semi-axes
   std::optional<double> elongation;
+  bool conformal = false;       // --map conformal
   Vec3 shape = Vec3::Ones();    // semi-axes of a cell of radius 1 (from the two options above)
   bool sphere() const { return shape == Vec3::Ones(); }
 };
@@ -136,6 +140,13 @@ const std::map<std::string, Handler> &optionHandlers()
        }},
       {"--ellipsoid", [](ArgReader &a, Options &o) { o.ellipsoid = semiAxes(a.word()); }},
       {"--elongation", [](ArgReader &a, Options &o) { o.elongation = a.real(); }},
+      {"--map",
+       [](ArgReader &a, Options &o) {
+         const std::string kind = a.word();
+         if (kind != "affine" && kind != "conformal")
+           throw UsageError("--map must be affine or conformal, not '" + kind + "'");
+         o.conformal = kind == "conformal";
+       }},
       {"--nwall", [](ArgReader &a, Options &o) { o.nwall = a.integer(); }},
       {"--mesh",
        [](ArgReader &a, Options &o) {
@@ -192,6 +203,13 @@ void validate(const Options &o)
   require(!o.out.empty(), "--out FILE is required");
 }
 
+// true if two of the semi-axes are equal (a spheroid, or a sphere)
+bool spheroidAxis(const Vec3 &s)
+{
+  const auto same = [](double u, double v) { return std::abs(u - v) <= 1e-12 * std::max(u, v); };
+  return same(s[0], s[1]) || same(s[1], s[2]) || same(s[0], s[2]);
+}
+
 // The cell's shape: --ellipsoid A:B:C gives R = (A B C)^(1/3) (the sphere of equal volume) and
 // semi-axes (A, B, C) / R per unit radius; --elongation E the prolate spheroid along x with
 // a / b = E of the volume of the sphere of --radius: (E^(2/3), E^(-1/3), E^(-1/3)).
@@ -208,6 +226,9 @@ void resolveShape(Options &o)
     require(e >= 1 && e <= 100, "--elongation must be in [1, 100]");
     o.shape = Vec3(std::cbrt(e * e), 1 / std::cbrt(e), 1 / std::cbrt(e));
   }
+  require(
+      !o.conformal || (!o.sphere() && spheroidAxis(o.shape)),
+      "--map conformal needs a spheroid: --elongation, or --ellipsoid with two equal semi-axes");
 }
 
 Options parseOptions(int argc, char **argv)
@@ -421,7 +442,9 @@ void run(const Options &o, const std::string &args)
   const std::vector<CellSpec> cells = cellLattice(counts, spacing, o.radius, o.spread, o.seed);
   checkNoOverlap(cells, o.shape.maxCoeff());
   WallMesh mesh = wallMesh(o);
-  if (!o.sphere()) mesh.unit = ellipsoidSurface(mesh.unit, o.shape);
+  if (!o.sphere())
+    mesh.unit = o.conformal ? conformalSpheroidSurface(mesh.unit, o.shape)
+                            : ellipsoidSurface(mesh.unit, o.shape);
   const Surface &unit = mesh.unit;
   BuildParams params;
   params.spacing = sp;

@@ -562,6 +562,63 @@ Surface ellipsoidSurface(const Surface &unitSphere, const Vec3 &axes)
   return s;
 }
 
+Surface conformalSpheroidSurface(const Surface &unitSphere, const Vec3 &axes)
+{
+  // the axis of revolution k: the semi-axis that differs from the two equal others
+  int k = -1;
+  for (int d = 0; d < 3; ++d) {
+    const double u = axes[(d + 1) % 3], v = axes[(d + 2) % 3];
+    if (std::abs(u - v) <= 1e-12 * std::max(u, v)) k = d;
+  }
+  if (k < 0) throw std::runtime_error("the conformal map needs a spheroid (two equal semi-axes)");
+  const double a = axes[k], b = axes[(k + 1) % 3];
+  // G on a grid of phi in [0, pi] (trapezoidal rule, smooth integrand: 0 at both ends), 0 at pi/2
+  const int n = 8192;
+  const double h = kPi / n;
+  const auto g = [a, b](double t) {
+    const double s = std::sin(t), c = std::cos(t);
+    return s > 0.0 ? (std::sqrt(a * a * s * s + b * b * c * c) - b) / (b * s) : 0.0;
+  };
+  std::vector<double> G(n + 1, 0.0);
+  for (int i = 1; i <= n; ++i) G[i] = G[i - 1] + 0.5 * h * (g((i - 1) * h) + g(i * h));
+  const double mid = G[n / 2];
+  for (double &v : G) v -= mid;
+  const auto Gat = [&](double phi) {
+    const int i = std::min(static_cast<int>(phi / h), n - 1);
+    const double f = phi / h - i;
+    return (1.0 - f) * G[i] + f * G[i + 1];
+  };
+
+  std::vector<Vec3> points;
+  points.reserve(unitSphere.points.size());
+  const Vec3 e = Vec3::Unit(k);
+  for (const Vec3 &x : unitSphere.points) {
+    const Vec3 side = x - x[k] * e;
+    const double rho = side.norm(), theta = std::atan2(rho, x[k]);
+    double phi = theta;
+    if (rho > 0.0) {
+      // ln tan(phi/2) + G(phi) increases with phi: bisection to the sphere's isothermal latitude
+      const double target = std::log(std::tan(0.5 * theta));
+      double lo = 0.0, hi = kPi;
+      for (int it = 0; it < 100; ++it) {
+        const double m = 0.5 * (lo + hi);
+        (std::log(std::tan(0.5 * m)) + Gat(m) < target ? lo : hi) = m;
+      }
+      phi = 0.5 * (lo + hi);
+    }
+    points.push_back(a * std::cos(phi) * e + (rho > 0.0 ? b * std::sin(phi) / rho : 0.0) * side);
+  }
+  // the sphere's triangles on the mapped points: the same topology (not always the points' hull)
+  Surface out = unitSphere;
+  out.points = std::move(points);
+  for (const Tri &t : out.triangles) {
+    const Vec3 &p = out.points[t[0]];
+    if ((out.points[t[1]] - p).cross(out.points[t[2]] - p).dot(p) <= 0.0)
+      throw std::runtime_error("conformalSpheroidSurface: a triangle turned inward");
+  }
+  return out;
+}
+
 std::vector<Vec3> fluidEllipsoid(const Vec3 &axes, double gap, double dx)
 {
   // x inside the ellipsoid E scaled by f = 1 - gap / c_min about its centre is at least gap from

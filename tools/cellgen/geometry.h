@@ -91,6 +91,15 @@ std::vector<Vec3> fluidLattice(double radius, double dx);
 // topology (12 five-fold particles for a geodesic mesh); bonds along an axis stretch by its factor.
 Surface ellipsoidSurface(const Surface &unitSphere, const Vec3 &axes);
 
+// The unit sphere mesh's points mapped onto the spheroid of semi-axes `axes` (two equal) by a
+// conformal map: a point at angle theta from the axis of revolution goes to the point of the
+// spheroid at isothermal latitude equal to the sphere's, ln tan(theta/2) = ln tan(phi/2) + G(phi),
+// G(phi) = int_{pi/2}^{phi} (sqrt(a^2 sin^2 t + b^2 cos^2 t) - b) / (b sin t) dt (a along the
+// axis, b around it), keeping the azimuth and the sphere's triangles (topology). Small triangles
+// keep their angles, their size varies along the axis; the wall is not always exactly the convex
+// hull of its points. Throws unless two semi-axes are equal, or if a triangle turns inward.
+Surface conformalSpheroidSurface(const Surface &unitSphere, const Vec3 &axes);
+
 // Simple cubic lattice points of spacing dx, centred on the origin, inside the ellipsoid of
 // semi-axes `axes` scaled by 1 - gap / (smallest semi-axis): at least `gap` from its surface.
 std::vector<Vec3> fluidEllipsoid(const Vec3 &axes, double gap, double dx);

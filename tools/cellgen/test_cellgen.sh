@@ -205,6 +205,48 @@ run ellipsoid 1092 1624 0.05 0.03 1 -- --elongation 1.45
 run ellipsoid-triaxial 792 300 0 0.03 1 -- --ellipsoid 30e-6:20e-6:15e-6 --nwall 800 --nfluid 300
 run ellipsoid-lattice 312 0 0 0.03 0 -- --ellipsoid 12e-6:10e-6:8e-6 --nwall 300 --dx 2e-6 --cells 2 2 1 --wall-mass 1e-13
 run ellipsoid-spiral 300 0 0 0.03 1 -- --mesh spiral --nwall 300 --dx 8e-6 --elongation 2
+run ellipsoid-conformal 1092 1624 0.05 0.03 1 -- --elongation 1.45 --map conformal
+run ellipsoid-conformal-oblate 312 0 0 0.03 1 -- --ellipsoid 20e-6:20e-6:12e-6 --nwall 300 --dx 3e-6 --map conformal
+
+# angle_change SPHERE.data MAPPED.data: the largest change of a triangle's angle (degrees) between two
+# files with the same atoms and triangles
+angle_change() {
+  awk 'function ang(x1, y1, z1, x2, y2, z2, x3, y3, z3,   ux, uy, uz, vx, vy, vz, cx, cy, cz) {
+      ux = x2 - x1; uy = y2 - y1; uz = z2 - z1; vx = x3 - x1; vy = y3 - y1; vz = z3 - z1
+      cx = uy * vz - uz * vy; cy = uz * vx - ux * vz; cz = ux * vy - uy * vx
+      return atan2(sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) * 180 / atan2(0, -1)
+    }
+    FNR == 1 { f++ }
+    /^[ \t]*$/ { next }
+    $1 == "Atoms" || $1 == "Bonds" || $1 == "Angles" || $1 == "CellAtoms" || $1 == "Masses" { sec = $1; next }
+    sec == "Atoms" && NF >= 6 { X[f, $1] = $4; Y[f, $1] = $5; Z[f, $1] = $6 }
+    sec == "Angles" && NF == 5 && f == 1 { n++; A[n] = $3; B[n] = $4; C[n] = $5 }
+    END {
+      for (t = 1; t <= n; t++) for (k = 0; k < 3; k++) {
+        i = k == 0 ? A[t] : k == 1 ? B[t] : C[t]; j = k == 0 ? B[t] : k == 1 ? C[t] : A[t]; l = k == 0 ? C[t] : k == 1 ? A[t] : B[t]
+        d = ang(X[1, i], Y[1, i], Z[1, i], X[1, j], Y[1, j], Z[1, j], X[1, l], Y[1, l], Z[1, l]) - \
+            ang(X[2, i], Y[2, i], Z[2, i], X[2, j], Y[2, j], Z[2, j], X[2, l], Y[2, l], Z[2, l])
+        if (d < 0) d = -d; if (d > worst) worst = d
+      }
+      printf "%.6f\n", worst
+    }' "$1" "$2"
+}
+
+echo "[conformal map] triangle angles kept: the largest change from the sphere mesh's below 2 deg at 1092 particles, falling below 0.6 x that at 4002 (first order); the affine map changes them by more than 15 deg"
+for nw in 1091 4000; do
+  "$bin" --nwall $nw --nfluid 0 --out "$tmp/s$nw.data" >/dev/null
+  "$bin" --nwall $nw --nfluid 0 --elongation 1.45 --map conformal --out "$tmp/c$nw.data" >/dev/null
+  "$bin" --nwall $nw --nfluid 0 --elongation 1.45 --out "$tmp/a$nw.data" >/dev/null
+done
+c1=$(angle_change "$tmp/s1091.data" "$tmp/c1091.data")
+c4=$(angle_change "$tmp/s4000.data" "$tmp/c4000.data")
+a1=$(angle_change "$tmp/s1091.data" "$tmp/a1091.data")
+if awk -v c1="$c1" -v c4="$c4" -v a1="$a1" 'BEGIN { exit !(c1 < 2 && c4 < 0.6 * c1 && a1 > 15) }'; then
+  echo "  ok: conformal $c1 (1092), $c4 (4002); affine $a1 (1092)"
+else
+  echo "  FAIL: conformal $c1 (1092), $c4 (4002); affine $a1 (1092)"
+  failed=1
+fi
 
 echo "[ellipsoid volume] x -> (a x, b y, c z) scales volumes by abc: the mesh's V / (4/3 pi a b c) is the sphere mesh's V / (4/3 pi R^3)"
 vs=$(sed -n 's/.*volume \/ exact \([0-9.]*\).*/\1/p' "$tmp/default.check")
@@ -273,6 +315,9 @@ expect_error ellipsoid-and-radius -- --ellipsoid 3e-5:2e-5:1e-5 --radius 1e-5
 expect_error ellipsoid-and-elongation -- --ellipsoid 3e-5:2e-5:1e-5 --elongation 1.5
 expect_error elongation-below-1 -- --elongation 0.5
 expect_error ellipsoid-gap-too-large -- --ellipsoid 3e-5:2e-5:1e-5 --gap 1.2e-5
+expect_error conformal-triaxial -- --ellipsoid 3e-5:2e-5:1e-5 --map conformal
+expect_error conformal-sphere -- --map conformal
+expect_error bad-map -- --elongation 1.45 --map stretched
 
 if [ "$failed" -ne 0 ]; then
   echo "test_cellgen: FAILED"
