@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 using namespace LAMMPS_NS;
 
@@ -29,17 +30,17 @@ static double cross_norm(const double *u, const double *w)
 
 /* ---------------------------------------------------------------------- */
 
-CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, int fluid,
-                       int wall) :
+CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, int fluid, int wall,
+                       bool fluid_sums) :
     Pointers(lmp),
     command(command_in), group_name(group->names[igroup]), groupbit(group->bitmask[igroup]),
     fluidtype(fluid), walltype(wall), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
-    wallpair(nullptr), sphpair(nullptr)
+    geometry_only(!fluid_sums), wallpair(nullptr), sphpair(nullptr)
 {
-  for (int type : {fluid, wall})
+  for (int type : {geometry_only ? wall : fluid, wall})
     if (type < 1 || type > atom->ntypes)
       error->all(FLERR, "{}: atom type {} is out of range 1 to {}", command, type, atom->ntypes);
-  if (fluid == wall)
+  if (fluid == wall && !geometry_only)
     error->all(FLERR, "{}: fluid and wall atom types must differ (both {})", command, fluid);
   if (!atom->molecule_flag)
     error->all(FLERR, "{}: needs molecule (cell) IDs: use atom_style angle", command);
@@ -89,27 +90,10 @@ void CellReduce::find_cells()
 
 void CellReduce::init()
 {
-  if (!atom->rmass)
-    error->all(FLERR,
-               "{}: needs per-atom masses: add 'fix cellatoms all property/atom rmass d2_xref 3 "
-               "d_aref ghost yes' before read_data",
-               command);
-  irho = custom_vector("rho");
-  ipressure = custom_vector("pressure");
+  if (!geometry_only) init_fluid();
   int flag, cols;
   ixref = atom->find_custom("xref", flag, cols);
   if (flag != 1 || cols != 3) ixref = -1;
-
-  // the wall load comes from pair cell/wall (also as a hybrid sub-style) and from the wall
-  // boundary of pair cell/sph (pair_coeff I J wall), when these are defined
-  wallpair = dynamic_cast<PairCellWall *>(force->pair_match("cell/wall", 0));
-  sphpair = dynamic_cast<PairCellSPH *>(force->pair_match("cell/sph", 0));
-  if (wallpair) wallpair->request_wall_load(fluidtype, walltype, command);
-  if (!wallpair && !(sphpair && sphpair->has_wall_boundary()) && measure == TURGOR_WALL)
-    error->all(FLERR,
-               "{}: turgor wall (the default) needs the wall load from pair_style cell/wall; add "
-               "it or use 'turgor sph'",
-               command);
 
   const int n = ncell();
   std::vector<double> sum(4 * n, 0.0), all(4 * n);
@@ -127,6 +111,31 @@ void CellReduce::init()
   for (int c = 0; c < n; c++)
     if (all[4 * c + 3] > 0.0)
       for (int d = 0; d < 3; d++) ref[3 * c + d] = all[4 * c + d] / all[4 * c + 3];
+}
+
+/* ----------------------------------------------------------------------
+   the fluid's per-atom fields and the pairs that tally the wall load
+------------------------------------------------------------------------- */
+
+void CellReduce::init_fluid()
+{
+  if (!atom->rmass)
+    error->all(FLERR,
+               "{}: needs per-atom masses: add 'fix cellatoms all property/atom rmass d2_xref 3 "
+               "d_aref ghost yes' before read_data",
+               command);
+  irho = custom_vector("rho");
+  ipressure = custom_vector("pressure");
+  // the wall load comes from pair cell/wall (also as a hybrid sub-style) and from the wall
+  // boundary of pair cell/sph (pair_coeff I J wall), when these are defined
+  wallpair = dynamic_cast<PairCellWall *>(force->pair_match("cell/wall", 0));
+  sphpair = dynamic_cast<PairCellSPH *>(force->pair_match("cell/sph", 0));
+  if (wallpair) wallpair->request_wall_load(fluidtype, walltype, command);
+  if (!wallpair && !(sphpair && sphpair->has_wall_boundary()) && measure == TURGOR_WALL)
+    error->all(FLERR,
+               "{}: turgor wall (the default) needs the wall load from pair_style cell/wall; add "
+               "it or use 'turgor sph'",
+               command);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -159,18 +168,20 @@ int CellReduce::index(tagint molecule) const
    triangles, if not nullptr, is filled with the counted triangles of the owned atoms.
 ------------------------------------------------------------------------- */
 
-void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles)
+void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
+                        std::vector<tagint> *corners)
 {
   const int n = ncell();
   local.assign(NCOLUMN * n, 0.0);
   total.resize(NCOLUMN * n);
   cellof.assign(atom->nlocal, -1);
   if (triangles) triangles->clear();
+  if (corners) corners->clear();
 
   double **x = atom->x;
   const double *rmass = atom->rmass;
-  const double *rho = atom->dvector[irho];
-  const double *pressure = atom->dvector[ipressure];
+  const double *rho = geometry_only ? nullptr : atom->dvector[irho];
+  const double *pressure = geometry_only ? nullptr : atom->dvector[ipressure];
   double **xref = ixref >= 0 ? atom->darray[ixref] : nullptr;
   const tagint *tag = atom->tag;
   const tagint *molecule = atom->molecule;
@@ -188,6 +199,7 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles)
     double *s = &local[NCOLUMN * c];
 
     if (type[i] == fluidtype) {
+      if (geometry_only) continue;
       if (!(rho[i] > 0.0)) {
         s[BADRHO] += 1.0;
         continue;
@@ -247,6 +259,8 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles)
       if (triangles)
         triangles->insert(triangles->end(),
                           {(double) c, a[0], a[1], a[2], b[0], b[1], b[2], cc[0], cc[1], cc[2]});
+      if (corners)
+        corners->insert(corners->end(), {atom->angle_atom1[i][m], tag[i], atom->angle_atom3[i][m]});
       if (xref) {
         double u[3] = {xref[ia][0] - xref[i][0], xref[ia][1] - xref[i][1],
                        xref[ia][2] - xref[i][2]};
@@ -283,6 +297,51 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles)
                  "{}: cell {} has {} fluid atoms without a density rho > 0 (is pair cell/sph "
                  "computing it?)",
                  command, ids[c], (bigint) get(c, BADRHO));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the triangles of reduce() (10 numbers each: cell index, corners) from every rank on every rank
+   (MPI_Allgatherv), grouped by cell in rank order, with their corner IDs if mycorners is given
+------------------------------------------------------------------------- */
+
+void CellReduce::gather_triangles(const std::vector<double> &mine, CellTriangles &all,
+                                  const std::vector<tagint> *mycorners) const
+{
+  const int nprocs = comm->nprocs;
+  const int nmine = (int) mine.size();
+  all.counts.resize(nprocs);
+  all.displs.assign(nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, all.counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) all.displs[p] = all.displs[p - 1] + all.counts[p - 1];
+  all.gathered.resize(all.displs.back() + all.counts.back());
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.gathered.data(), all.counts.data(),
+                 all.displs.data(), MPI_DOUBLE, world);
+  const int ntri = (int) all.gathered.size() / 10;
+  if (mycorners) {
+    // 3 IDs per triangle where the coordinates have 10 numbers
+    for (int p = 0; p < nprocs; p++) {
+      all.counts[p] = all.counts[p] / 10 * 3;
+      all.displs[p] = all.displs[p] / 10 * 3;
+    }
+    all.gathered_tags.resize(3 * (size_t) ntri);
+    MPI_Allgatherv(mycorners->data(), (int) mycorners->size(), MPI_LMP_TAGINT,
+                   all.gathered_tags.data(), all.counts.data(), all.displs.data(), MPI_LMP_TAGINT,
+                   world);
+  }
+
+  // triangles grouped by cell: those of cell c are first[c] to first[c + 1] - 1
+  const double *g = all.gathered.data();
+  all.first.assign(ncell() + 1, 0);
+  for (int t = 0; t < ntri; t++) all.first[(int) g[10 * t] + 1]++;
+  std::partial_sum(all.first.begin(), all.first.end(), all.first.begin());
+  std::vector<int> slot(all.first.begin(), all.first.end() - 1);
+  all.coords.resize(9 * (size_t) ntri);
+  all.tags.resize(mycorners ? 3 * (size_t) ntri : 0);
+  for (int t = 0; t < ntri; t++) {
+    const int s = slot[(int) g[10 * t]]++;
+    std::copy_n(&g[10 * t + 1], 9, &all.coords[9 * (size_t) s]);
+    if (mycorners) std::copy_n(&all.gathered_tags[3 * (size_t) t], 3, &all.tags[3 * (size_t) s]);
   }
 }
 

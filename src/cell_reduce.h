@@ -54,15 +54,23 @@ class CellReduce : protected Pointers {
     TURGOR_SPH      // the volume-weighted mean SPH pressure of the fluid
   };
 
-  CellReduce(class LAMMPS *, const std::string &command, int igroup, int fluidtype, int walltype);
+  // fluid_sums false: wall geometry only (compute cell/shape): fluidtype is not used, reduce() sums
+  // no fluid and init() needs neither masses, SPH fields nor a wall load
+  CellReduce(class LAMMPS *, const std::string &command, int igroup, int fluidtype, int walltype,
+             bool fluid_sums = true);
 
   // the value of a 'turgor wall|sph' keyword
   void set_turgor(const std::string &value);
   void find_cells();
   void init();
   // triangles, if given, receives each counted wall triangle as 10 numbers: cell index, then the
-  // corners a, b, c relative to the cell's reference point, unwrapped as for the volume
-  void reduce(const double *bond_gt0 = nullptr, std::vector<double> *triangles = nullptr);
+  // corners a, b, c relative to the cell's reference point, unwrapped as for the volume; corners,
+  // if given, their atom IDs (3 per triangle)
+  void reduce(const double *bond_gt0 = nullptr, std::vector<double> *triangles = nullptr,
+              std::vector<tagint> *corners = nullptr);
+  // every rank's triangles (and corner IDs) of reduce(), gathered on all ranks, grouped by cell
+  void gather_triangles(const std::vector<double> &mine, class CellTriangles &all,
+                        const std::vector<tagint> *mycorners = nullptr) const;
 
   int ncell() const { return (int) ids.size(); }
   tagint id(int c) const { return ids[c]; }
@@ -90,6 +98,7 @@ class CellReduce : protected Pointers {
   int groupbit, fluidtype, walltype;
   int irho, ipressure, ixref;
   int measure;
+  bool geometry_only;
   class PairCellWall *wallpair;    // tallies the wall load, nullptr if none
   class PairCellSPH *sphpair;      // its wall boundary carries the rest of the load, or nullptr
   std::vector<tagint> ids;         // cell (molecule) IDs, ascending
@@ -97,8 +106,25 @@ class CellReduce : protected Pointers {
   std::vector<double> local, total;
   std::vector<int> cellof;
 
+  void init_fluid();
   int index(tagint molecule) const;
   int custom_vector(const char *name) const;
+};
+
+// each cell's wall triangles on every rank (CellReduce::gather_triangles): cell c has ntri(c)
+// triangles, 9 coordinates each (corners a b c relative to the cell's reference point, outward)
+// from xyz(c), and with corner IDs their 3 atom IDs each from ids(c)
+class CellTriangles {
+ public:
+  int ntri(int c) const { return first[c + 1] - first[c]; }
+  const double *xyz(int c) const { return &coords[9 * (size_t) first[c]]; }
+  const tagint *ids(int c) const { return &tags[3 * (size_t) first[c]]; }
+
+ private:
+  friend class CellReduce;
+  std::vector<double> coords, gathered;
+  std::vector<tagint> tags, gathered_tags;
+  std::vector<int> first, counts, displs;
 };
 
 }    // namespace LAMMPS_NS

@@ -12,6 +12,7 @@
 
 #include "bond_cell_neohookean.h"
 #include "compute_cell_props.h"
+#include "compute_cell_shape.h"
 #include "fix_cell_pressure.h"
 #include "fix_cell_turgor.h"
 #include "pair_cell_sph.h"
@@ -56,6 +57,8 @@ const StyleEntry STYLES[] = {
      nullptr, &create_v2<FixCellTurgor>},
     {"compute", "cell/props", "per-cell mass, volume, area, turgor, osmotic pressure and shape",
      nullptr, &create_v2<ComputeCellProps>},
+    {"compute", "cell/shape", "per-cell section descriptors (ImageJ) and wall wrinkling", nullptr,
+     &create_v2<ComputeCellShape>},
     {"pair", "cell/sph", "SPH cell fluid: summation density, pressure and Morris viscosity",
      &create_v1<PairCellSPH>, nullptr},
     {"pair", "cell/wall", "wall repulsion, adhesion, contact", &create_v1<PairCellWall>, nullptr},

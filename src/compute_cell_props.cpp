@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <numeric>
 
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
@@ -72,6 +71,7 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) : Compute(
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/props", igroup, fluidtype, walltype);
+  walls = std::make_unique<CellTriangles>();
   cells->set_turgor(measure);
   cells->find_cells();
 
@@ -170,32 +170,15 @@ void ComputeCellProps::compute_array()
 void ComputeCellProps::count_outside()
 {
   const int n = size_array_rows;
-  const int nmine = (int) mine.size();
-  counts.resize(comm->nprocs);
-  displs.assign(comm->nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  all.resize(displs.back() + counts.back());
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
-
-  // triangles grouped by cell: those of cell c are first[c] to first[c + 1] - 1
-  const int ntri = (int) all.size() / 10;
-  first.assign(n + 1, 0);
-  for (int t = 0; t < ntri; t++) first[(int) all[10 * t] + 1]++;
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<int> slot(first.begin(), first.end() - 1);
-  tri.resize(9 * (size_t) ntri);
-  for (int t = 0; t < ntri; t++)
-    std::copy_n(&all[10 * t + 1], 9, &tri[9 * (size_t) slot[(int) all[10 * t]]++]);
+  cells->gather_triangles(mine, *walls);
 
   // per cell: o, squared radius of the ball holding every corner, of the ball touching no
   // triangle plane, winding number at o
   centre.assign(6 * n, 0.0);
   for (int c = 0; c < n; c++) {
     double *o = &centre[6 * c];
-    const double *ct = &tri[9 * (size_t) first[c]];
-    const int nt = first[c + 1] - first[c];
+    const double *ct = walls->xyz(c);
+    const int nt = walls->ntri(c);
     for (int k = 0; k < 9 * nt; k++) o[k % 3] += ct[k] / (3.0 * nt);
     double rout2 = 0.0, rin2 = INFINITY;
     for (int t = 0; t < nt; t++) {
@@ -234,7 +217,7 @@ void ComputeCellProps::count_outside()
     if (r2 < o[4])
       w = o[5];
     else if (r2 <= o[3])
-      w = winding_number(&tri[9 * (size_t) first[c]], first[c + 1] - first[c], xu);
+      w = winding_number(walls->xyz(c), walls->ntri(c), xu);
     if (w < 0.5) count[c] += 1.0;
   }
   outside.resize(n);

@@ -14,6 +14,7 @@
 namespace LAMMPS_NS {
 
 class CellReduce;
+class CellTriangles;
 class FixCellTurgor;
 
 class ComputeCellProps : public Compute {
@@ -52,10 +53,10 @@ class ComputeCellProps : public Compute {
 
  private:
   std::unique_ptr<CellReduce> cells;
+  std::unique_ptr<CellTriangles> walls;    // every cell's wall triangles, on every rank
   std::vector<FixCellTurgor *> turgor;
   int fluidtype;
-  std::vector<double> mine, all, tri, centre, outside;    // wall triangles, per-cell results
-  std::vector<int> counts, displs, first;
+  std::vector<double> mine, centre, outside;    // this rank's wall triangles, per-cell results
 
   void count_outside();
 };

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -25,9 +26,15 @@ constexpr const char *kUsage =
     "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--mesh icosahedral|spiral]\n"
     "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
     "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
-    "               [--margin F=0.5] --out FILE.data\n"
+    "               [--margin F=0.5] [--ellipsoid A:B:C | --elongation E]\n"
+    "               [--map affine|conformal] --out FILE.data\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
+    "--ellipsoid A:B:C: semi-axes along x, y, z (replaces --radius); --elongation E: prolate along "
+    "x,\n"
+    "            a/b = E, with the volume of the sphere of --radius; --map: how the sphere mesh\n"
+    "            goes onto the ellipsoid (affine x -> (a x, b y, c z), or conformal for "
+    "spheroids).\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
 
 struct UsageError : std::runtime_error {
@@ -48,6 +55,12 @@ struct Options {
   double margin = 0.5;
   std::uint64_t seed = 1;
   std::string out;
+  bool radiusGiven = false;
+  std::optional<Vec3> ellipsoid;    // --ellipsoid semi-axes
+  std::optional<double> elongation;
+  bool conformal = false;       // --map conformal
+  Vec3 shape = Vec3::Ones();    // semi-axes of a cell of radius 1 (from the two options above)
+  bool sphere() const { return shape == Vec3::Ones(); }
 };
 
 // Hands out the command-line words one at a time, converting option values.
@@ -94,12 +107,46 @@ class ArgReader {
   std::string option_;
 };
 
+// --ellipsoid A:B:C: three positive, finite semi-axes
+Vec3 semiAxes(const std::string &word)
+{
+  Vec3 axes;
+  size_t start = 0;
+  for (int d = 0; d < 3; ++d) {
+    const size_t end = d < 2 ? word.find(':', start) : word.size();
+    const std::string part = end == std::string::npos ? "" : word.substr(start, end - start);
+    size_t used = 0;
+    try {
+      axes[d] = std::stod(part, &used);
+    } catch (const std::logic_error &) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || !std::isfinite(axes[d]) || axes[d] <= 0)
+      throw UsageError("--ellipsoid needs three positive semi-axes A:B:C, not '" + word + "'");
+    start = end + 1;
+  }
+  return axes;
+}
+
 using Handler = std::function<void(ArgReader &, Options &)>;
 
 const std::map<std::string, Handler> &optionHandlers()
 {
   static const std::map<std::string, Handler> handlers = {
-      {"--radius", [](ArgReader &a, Options &o) { o.radius = a.real(); }},
+      {"--radius",
+       [](ArgReader &a, Options &o) {
+         o.radius = a.real();
+         o.radiusGiven = true;
+       }},
+      {"--ellipsoid", [](ArgReader &a, Options &o) { o.ellipsoid = semiAxes(a.word()); }},
+      {"--elongation", [](ArgReader &a, Options &o) { o.elongation = a.real(); }},
+      {"--map",
+       [](ArgReader &a, Options &o) {
+         const std::string kind = a.word();
+         if (kind != "affine" && kind != "conformal")
+           throw UsageError("--map must be affine or conformal, not '" + kind + "'");
+         o.conformal = kind == "conformal";
+       }},
       {"--nwall", [](ArgReader &a, Options &o) { o.nwall = a.integer(); }},
       {"--mesh",
        [](ArgReader &a, Options &o) {
@@ -143,7 +190,7 @@ void validate(const Options &o)
   require(o.nwall >= 4 && o.nwall <= 10000000, "--nwall must be in [4, 1e7]");
   require(o.nfluid >= 0 && o.nfluid <= 100000000, "--nfluid must be in [0, 1e8]");
   require(!o.dx || *o.dx > 0, "--dx must be positive");
-  require(!o.gap || (*o.gap >= 0 && *o.gap < o.radius * (1 - o.spread)),
+  require(!o.gap || (*o.gap >= 0 && *o.gap < o.radius * o.shape.minCoeff() * (1 - o.spread)),
           "--gap must be in [0, smallest radius)");
   require(o.rho0 > 0, "--rho0 must be positive");
   require(!o.wallMass || *o.wallMass > 0, "--wall-mass must be positive");
@@ -156,6 +203,34 @@ void validate(const Options &o)
   require(!o.out.empty(), "--out FILE is required");
 }
 
+// true if two of the semi-axes are equal (a spheroid, or a sphere)
+bool spheroidAxis(const Vec3 &s)
+{
+  const auto same = [](double u, double v) { return std::abs(u - v) <= 1e-12 * std::max(u, v); };
+  return same(s[0], s[1]) || same(s[1], s[2]) || same(s[0], s[2]);
+}
+
+// The cell's shape: --ellipsoid A:B:C gives R = (A B C)^(1/3) (the sphere of equal volume) and
+// semi-axes (A, B, C) / R per unit radius; --elongation E the prolate spheroid along x with
+// a / b = E of the volume of the sphere of --radius: (E^(2/3), E^(-1/3), E^(-1/3)).
+void resolveShape(Options &o)
+{
+  require(!o.ellipsoid || (!o.radiusGiven && !o.elongation),
+          "--ellipsoid gives size and shape: do not combine it with --radius or --elongation");
+  if (o.ellipsoid) {
+    o.radius = std::cbrt(o.ellipsoid->prod());
+    o.shape = *o.ellipsoid / o.radius;
+  }
+  if (o.elongation) {
+    const double e = *o.elongation;
+    require(e >= 1 && e <= 100, "--elongation must be in [1, 100]");
+    o.shape = Vec3(std::cbrt(e * e), 1 / std::cbrt(e), 1 / std::cbrt(e));
+  }
+  require(
+      !o.conformal || (!o.sphere() && spheroidAxis(o.shape)),
+      "--map conformal needs a spheroid: --elongation, or --ellipsoid with two equal semi-axes");
+}
+
 Options parseOptions(int argc, char **argv)
 {
   Options o;
@@ -166,6 +241,7 @@ Options parseOptions(int argc, char **argv)
     if (h == optionHandlers().end()) throw UsageError("unknown option '" + opt + "'");
     h->second(args, o);
   }
+  resolveShape(o);
   validate(o);
   return o;
 }
@@ -250,8 +326,13 @@ struct Totals {
   double minEdge = INFINITY, meanEdge = 0, maxEdge = 0;
 };
 
-Totals totals(const System &sys, const std::vector<CellSpec> &cells, const SurfaceStats &unit)
+Totals totals(const System &sys, const std::vector<CellSpec> &cells, const SurfaceStats &unit,
+              const Vec3 &shape)
 {
+  // the exact volume and area of a cell of radius 1: the sphere's, or the ellipsoid's
+  const bool sphere = shape == Vec3::Ones();
+  const double exactVolume = 4.0 / 3.0 * kPi * shape.prod();
+  const double exactArea = sphere ? 4.0 * kPi : ellipsoidArea(shape);
   Totals t;
   t.cells = cells.size();
   std::vector<long> fluidPerCell(cells.size(), 0);
@@ -265,8 +346,8 @@ Totals totals(const System &sys, const std::vector<CellSpec> &cells, const Surfa
   t.fluid = static_cast<long>(sys.particles.size()) - t.wall;
   for (const CellSpec &c : cells) {
     const double r = c.radius;
-    t.sphereVolume += 4.0 / 3.0 * kPi * r * r * r;
-    t.sphereArea += 4.0 * kPi * r * r;
+    t.sphereVolume += exactVolume * r * r * r;
+    t.sphereArea += exactArea * r * r;
     t.volume += unit.volume * r * r * r;
     t.area += unit.area * r * r;
     t.minEdge = std::min(t.minEdge, unit.minEdge * r);
@@ -318,8 +399,14 @@ void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, c
   std::printf("wall valence (particles x bonds): %s\n", valenceSummary(st).c_str());
   std::printf("wall bond length: min %g, mean %g, max %g m (max/min %.3f)\n", t.minEdge, t.meanEdge,
               t.maxEdge, t.maxEdge / t.minEdge);
-  std::printf("enclosed volume %g m^3 = %.5f x spheres; area %g m^2 = %.5f x spheres\n", t.volume,
-              t.volume / t.sphereVolume, t.area, t.area / t.sphereArea);
+  if (!o.sphere())
+    std::printf("ellipsoid: semi-axes %g, %g, %g m (x, y, z; elongation %.4f), equal-volume R = %g "
+                "m\n",
+                o.radius * o.shape[0], o.radius * o.shape[1], o.radius * o.shape[2],
+                o.shape.maxCoeff() / o.shape.minCoeff(), o.radius);
+  const char *exact = o.sphere() ? "spheres" : "ellipsoids";
+  std::printf("enclosed volume %g m^3 = %.5f x %s; area %g m^2 = %.5f x %s\n", t.volume,
+              t.volume / t.sphereVolume, exact, t.area, t.area / t.sphereArea, exact);
   std::printf("box [%g, %g] x [%g, %g] x [%g, %g] m; wrote %s in %.2f s\n", sys.lo[0], sys.hi[0],
               sys.lo[1], sys.hi[1], sys.lo[2], sys.hi[2], o.out.c_str(), seconds);
 }
@@ -337,6 +424,9 @@ std::string comment(const Options &o, const std::string &args, const FluidSpacin
   char buf[256];
   std::snprintf(buf, sizeof buf, " | R=%.15g DX=%.15g gap=%.15g cells=%zu fluid=%ld wall=%ld",
                 o.radius, sp.dx, sp.gap, t.cells, t.fluid, t.wall);
+  if (!o.sphere())
+    std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), " axes=%.15g:%.15g:%.15g",
+                  o.radius * o.shape[0], o.radius * o.shape[1], o.radius * o.shape[2]);
   return std::string(kVersion) + " | args: " + args + buf;
 }
 
@@ -345,22 +435,27 @@ void run(const Options &o, const std::string &args)
   const auto start = std::chrono::steady_clock::now();
   const FluidSpacing sp = fluidSpacing(o);
   // default spacing leaves a 5% gap between the largest possible cells
-  const double spacing = o.spacing.value_or(2.0 * o.radius * (1.0 + o.spread) * 1.05);
+  const double spacing =
+      o.spacing.value_or(2.0 * o.radius * (1.0 + o.spread) * 1.05 * o.shape.maxCoeff());
   const std::array<int, 3> counts{static_cast<int>(o.cells[0]), static_cast<int>(o.cells[1]),
                                   static_cast<int>(o.cells[2])};
   const std::vector<CellSpec> cells = cellLattice(counts, spacing, o.radius, o.spread, o.seed);
-  checkNoOverlap(cells);
-  const WallMesh mesh = wallMesh(o);
+  checkNoOverlap(cells, o.shape.maxCoeff());
+  WallMesh mesh = wallMesh(o);
+  if (!o.sphere())
+    mesh.unit = o.conformal ? conformalSpheroidSurface(mesh.unit, o.shape)
+                            : ellipsoidSurface(mesh.unit, o.shape);
   const Surface &unit = mesh.unit;
   BuildParams params;
   params.spacing = sp;
+  params.shape = o.shape;
   params.rho0 = o.rho0;
   params.withFluid = o.nfluid > 0;
   params.wallMass = o.wallMass;
   params.boxMargin = o.margin * o.radius;
   const System sys = buildSystem(unit, cells, params);
   const SurfaceStats stats = surfaceStats(unit);
-  const Totals t = totals(sys, cells, stats);
+  const Totals t = totals(sys, cells, stats, o.shape);
   writeData(o.out, sys, comment(o, args, sp, t));
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   printSummary(o, sp, sys, t, mesh, stats, elapsed.count());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <random>
@@ -316,16 +317,20 @@ namespace {
                   const BuildParams &params)
   {
     const double r = cell.radius;
-    const std::vector<Vec3> fluid = params.withFluid
-        ? fluidLattice(r - params.spacing.gap, params.spacing.dx)
-        : std::vector<Vec3>();
+    const bool sphere = params.shape == Vec3::Ones();
+    const std::vector<Vec3> fluid = !params.withFluid ? std::vector<Vec3>()
+        : sphere ? fluidLattice(r - params.spacing.gap, params.spacing.dx)
+                 : fluidEllipsoid(r * params.shape, params.spacing.gap, params.spacing.dx);
     if (fluid.empty() && params.withFluid)
       throw std::runtime_error("cell " + std::to_string(molecule) + " has no fluid particle");
-    // fluid fills the volume 4/3 pi R^3 enclosed by the wall at the reference density
+    // fluid fills the volume 4/3 pi R^3 enclosed by the wall at the reference density (an
+    // ellipsoid's R is the equal-volume radius: 4/3 pi R^3 = 4/3 pi a b c)
     const double fluidMass =
         params.rho0 * 4.0 / 3.0 * kPi * r * r * r / std::max<size_t>(fluid.size(), 1);
-    // wall shell of area 4 pi R^2 and the given thickness at the reference density
-    const double wallMass = params.wallMass.value_or(params.rho0 * 4.0 * kPi * r * r *
+    // wall shell of area 4 pi R^2 (ellipsoid: its exact area) and the given thickness at the
+    // reference density
+    const double shellArea = sphere ? 4.0 * kPi * r * r : ellipsoidArea(r * params.shape);
+    const double wallMass = params.wallMass.value_or(params.rho0 * shellArea *
                                                      params.wallThickness / unit.points.size());
     for (const Vec3 &x : fluid)
       sys.particles.push_back({molecule, kFluid, cell.centre + x, fluidMass});
@@ -550,6 +555,103 @@ std::vector<Vec3> fluidLattice(double radius, double dx)
   return points;
 }
 
+Surface ellipsoidSurface(const Surface &unitSphere, const Vec3 &axes)
+{
+  Surface s = unitSphere;
+  for (Vec3 &x : s.points) x = x.cwiseProduct(axes);
+  return s;
+}
+
+Surface conformalSpheroidSurface(const Surface &unitSphere, const Vec3 &axes)
+{
+  // the axis of revolution k: the semi-axis that differs from the two equal others
+  int k = -1;
+  for (int d = 0; d < 3; ++d) {
+    const double u = axes[(d + 1) % 3], v = axes[(d + 2) % 3];
+    if (std::abs(u - v) <= 1e-12 * std::max(u, v)) k = d;
+  }
+  if (k < 0) throw std::runtime_error("the conformal map needs a spheroid (two equal semi-axes)");
+  const double a = axes[k], b = axes[(k + 1) % 3];
+  // G on a grid of phi in [0, pi] (trapezoidal rule, smooth integrand: 0 at both ends), 0 at pi/2
+  const int n = 8192;
+  const double h = kPi / n;
+  const auto g = [a, b](double t) {
+    const double s = std::sin(t), c = std::cos(t);
+    return s > 0.0 ? (std::sqrt(a * a * s * s + b * b * c * c) - b) / (b * s) : 0.0;
+  };
+  std::vector<double> G(n + 1, 0.0);
+  for (int i = 1; i <= n; ++i) G[i] = G[i - 1] + 0.5 * h * (g((i - 1) * h) + g(i * h));
+  const double mid = G[n / 2];
+  for (double &v : G) v -= mid;
+  const auto Gat = [&](double phi) {
+    const int i = std::min(static_cast<int>(phi / h), n - 1);
+    const double f = phi / h - i;
+    return (1.0 - f) * G[i] + f * G[i + 1];
+  };
+
+  std::vector<Vec3> points;
+  points.reserve(unitSphere.points.size());
+  const Vec3 e = Vec3::Unit(k);
+  for (const Vec3 &x : unitSphere.points) {
+    const Vec3 side = x - x[k] * e;
+    const double rho = side.norm(), theta = std::atan2(rho, x[k]);
+    double phi = theta;
+    if (rho > 0.0) {
+      // ln tan(phi/2) + G(phi) increases with phi: bisection to the sphere's isothermal latitude
+      const double target = std::log(std::tan(0.5 * theta));
+      double lo = 0.0, hi = kPi;
+      for (int it = 0; it < 100; ++it) {
+        const double m = 0.5 * (lo + hi);
+        (std::log(std::tan(0.5 * m)) + Gat(m) < target ? lo : hi) = m;
+      }
+      phi = 0.5 * (lo + hi);
+    }
+    points.push_back(a * std::cos(phi) * e + (rho > 0.0 ? b * std::sin(phi) / rho : 0.0) * side);
+  }
+  // the sphere's triangles on the mapped points: the same topology (not always the points' hull)
+  Surface out = unitSphere;
+  out.points = std::move(points);
+  for (const Tri &t : out.triangles) {
+    const Vec3 &p = out.points[t[0]];
+    if ((out.points[t[1]] - p).cross(out.points[t[2]] - p).dot(p) <= 0.0)
+      throw std::runtime_error("conformalSpheroidSurface: a triangle turned inward");
+  }
+  return out;
+}
+
+std::vector<Vec3> fluidEllipsoid(const Vec3 &axes, double gap, double dx)
+{
+  // x inside the ellipsoid E scaled by f = 1 - gap / c_min about its centre is at least gap from
+  // the surface of E: the ball of radius (1 - f) c_min around x lies in f E + (1 - f) E = E
+  const double f = 1.0 - gap / axes.minCoeff();
+  std::vector<Vec3> points;
+  if (f <= 0.0) return points;
+  const Vec3 inner = f * axes;
+  const int k = static_cast<int>(inner.maxCoeff() / dx) + 1;
+  for (int i = -k; i <= k; ++i)
+    for (int j = -k; j <= k; ++j)
+      for (int l = -k; l <= k; ++l) {
+        const Vec3 x(dx * i, dx * j, dx * l);
+        if (x.cwiseQuotient(inner).squaredNorm() <= 1.0) points.push_back(x);
+      }
+  return points;
+}
+
+double ellipsoidArea(const Vec3 &axes)
+{
+  // a >= b >= c: S = 2 pi c^2 + 2 pi a b / sin(phi) (E(phi, k) sin^2(phi) + F(phi, k) cos^2(phi)),
+  // cos(phi) = c / a, k^2 = a^2 (b^2 - c^2) / (b^2 (a^2 - c^2))
+  Vec3 s = axes;
+  std::sort(s.data(), s.data() + 3, std::greater<double>());
+  const double a = s[0], b = s[1], c = s[2];
+  if (a - c <= 1e-14 * a) return 4.0 * kPi * a * a;
+  const double phi = std::acos(c / a);
+  const double k = std::sqrt(a * a * (b * b - c * c) / (b * b * (a * a - c * c)));
+  const double sn = std::sin(phi), cs = std::cos(phi);
+  return 2.0 * kPi * c * c +
+      2.0 * kPi * a * b / sn * (std::ellint_2(k, phi) * sn * sn + std::ellint_1(k, phi) * cs * cs);
+}
+
 std::vector<CellSpec> cellLattice(const std::array<int, 3> &counts, double spacing, double radius,
                                   double spread, std::uint64_t seed)
 {
@@ -565,11 +667,12 @@ std::vector<CellSpec> cellLattice(const std::array<int, 3> &counts, double spaci
   return cells;
 }
 
-void checkNoOverlap(const std::vector<CellSpec> &cells)
+void checkNoOverlap(const std::vector<CellSpec> &cells, double extent)
 {
   for (size_t i = 0; i < cells.size(); ++i)
     for (size_t j = i + 1; j < cells.size(); ++j)
-      if ((cells[i].centre - cells[j].centre).norm() <= cells[i].radius + cells[j].radius)
+      if ((cells[i].centre - cells[j].centre).norm() <=
+          extent * (cells[i].radius + cells[j].radius))
         throw std::runtime_error("cells " + std::to_string(i + 1) + " and " +
                                  std::to_string(j + 1) + " overlap; increase --spacing");
 }
@@ -582,8 +685,8 @@ System buildSystem(const Surface &unit, const std::vector<CellSpec> &cells,
   sys.hi = Vec3::Constant(-INFINITY);
   for (size_t k = 0; k < cells.size(); ++k) {
     appendCell(sys, unit, cells[k], static_cast<int>(k + 1), params);
-    sys.lo = sys.lo.cwiseMin(cells[k].centre - Vec3::Constant(cells[k].radius));
-    sys.hi = sys.hi.cwiseMax(cells[k].centre + Vec3::Constant(cells[k].radius));
+    sys.lo = sys.lo.cwiseMin(cells[k].centre - cells[k].radius * params.shape);
+    sys.hi = sys.hi.cwiseMax(cells[k].centre + cells[k].radius * params.shape);
   }
   sys.lo -= Vec3::Constant(params.boxMargin);
   sys.hi += Vec3::Constant(params.boxMargin);

@@ -84,6 +84,29 @@ FluidSpacing chooseSpacing(double radius, long target, std::optional<double> gap
 // Simple cubic lattice points of spacing dx, centred on the origin, with |x| <= radius.
 std::vector<Vec3> fluidLattice(double radius, double dx);
 
+// ---- ellipsoidal cells (--ellipsoid, --elongation) ----------------------------------------
+
+// The unit sphere mesh mapped onto the ellipsoid of semi-axes `axes` by x -> (a x, b y, c z). The
+// map is affine, so the triangles stay the outward convex hull of the points and keep their
+// topology (12 five-fold particles for a geodesic mesh); bonds along an axis stretch by its factor.
+Surface ellipsoidSurface(const Surface &unitSphere, const Vec3 &axes);
+
+// The unit sphere mesh's points mapped onto the spheroid of semi-axes `axes` (two equal) by a
+// conformal map: a point at angle theta from the axis of revolution goes to the point of the
+// spheroid at isothermal latitude equal to the sphere's, ln tan(theta/2) = ln tan(phi/2) + G(phi),
+// G(phi) = int_{pi/2}^{phi} (sqrt(a^2 sin^2 t + b^2 cos^2 t) - b) / (b sin t) dt (a along the
+// axis, b around it), keeping the azimuth and the sphere's triangles (topology). Small triangles
+// keep their angles, their size varies along the axis; the wall is not always exactly the convex
+// hull of its points. Throws unless two semi-axes are equal, or if a triangle turns inward.
+Surface conformalSpheroidSurface(const Surface &unitSphere, const Vec3 &axes);
+
+// Simple cubic lattice points of spacing dx, centred on the origin, inside the ellipsoid of
+// semi-axes `axes` scaled by 1 - gap / (smallest semi-axis): at least `gap` from its surface.
+std::vector<Vec3> fluidEllipsoid(const Vec3 &axes, double gap, double dx);
+
+// Exact area of the ellipsoid of semi-axes `axes` (Legendre's incomplete elliptic integrals).
+double ellipsoidArea(const Vec3 &axes);
+
 struct CellSpec {
   Vec3 centre;
   double radius;
@@ -94,8 +117,8 @@ struct CellSpec {
 std::vector<CellSpec> cellLattice(const std::array<int, 3> &counts, double spacing, double radius,
                                   double spread, std::uint64_t seed);
 
-// Throws if two cells intersect.
-void checkNoOverlap(const std::vector<CellSpec> &cells);
+// Throws if two cells intersect; a cell reaches `extent` times its radius from its centre.
+void checkNoOverlap(const std::vector<CellSpec> &cells, double extent = 1.0);
 
 enum ParticleType { kFluid = 1, kWall = 2 };
 
@@ -108,6 +131,7 @@ struct Particle {
 
 struct BuildParams {
   FluidSpacing spacing;
+  Vec3 shape = Vec3::Ones();    // semi-axes of a cell of radius 1: the unit mesh's ellipsoid
   double rho0 = 1000;
   bool withFluid = true;    // false: walls only (--nfluid 0)
   std::optional<double> wallMass;

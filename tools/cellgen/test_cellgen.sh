@@ -8,8 +8,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failed=0
 
-# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL GEODESIC RHO0 WALL_MASS
+# check_data FILE WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL GEODESIC RHO0 WALL_MASS AXES
 # FLUID_TOL / VOLUME_TOL are relative; 0 skips the fluid-count / volume-accuracy test.
+# AXES = "a b c": ellipsoidal cells of these semi-axes (all cells alike): every wall particle on the
+# ellipsoid, every fluid particle inside it shrunk by 1 - gap / c_min, the volume against 4/3 pi a b c,
+# fluid masses rho0 (4/3 pi a b c) / M_k, the wall's total mass rho0 (ellipsoid area) 1 um (the
+# area by quadrature, to 1e-5) and the triangulated area within VOLUME_TOL of the ellipsoid's.
 # GEODESIC = 1: every cell's wall has exactly 12 particles with 5 bonds and all others 6.
 # Every per-atom mass must equal its documented formula (tools/cellgen/README.md, Masses), with R_k
 # the cell's wall radius: fluid rho0 (4/3 pi R_k^3) / M_k; wall WALL_MASS, or rho0 (4 pi R_k^2 1 um)
@@ -70,6 +74,15 @@ check_data() {
         m = mol[i]; dx = x[i] - cx[m]; dy = y[i] - cy[m]; dz = z[i] - cz[m]
         if (type[i] == 2) rad[m] += sqrt(dx * dx + dy * dy + dz * dz) / nv[m]
       }
+      if (axes != "") {
+        split(axes, sa, " "); cmin = sa[1]; if (sa[2] < cmin) cmin = sa[2]; if (sa[3] < cmin) cmin = sa[3]
+        shrink = (1 - gap / cmin) ^ 2
+        for (i in type) {
+          m = mol[i]; q = ((x[i] - cx[m]) / sa[1]) ^ 2 + ((y[i] - cy[m]) / sa[2]) ^ 2 + ((z[i] - cz[m]) / sa[3]) ^ 2
+          if (type[i] == 2 && abs(q - 1) > 1e-9) { fail("wall atom " i " off the ellipsoid: " q); break }
+          if (type[i] == 1 && q > shrink * (1 + 1e-9)) { fail("fluid atom " i " outside the ellipsoid shrunk by the gap"); break }
+        }
+      } else
       for (i in type) {
         m = mol[i]; dx = x[i] - cx[m]; dy = y[i] - cy[m]; dz = z[i] - cz[m]
         if (type[i] == 1 && sqrt(dx * dx + dy * dy + dz * dz) > rad[m] - gap + 1e-9 * rad[m])
@@ -84,8 +97,35 @@ check_data() {
         v6 = ax * (by * qz - bz * qy) + ay * (bz * qx - bx * qz) + az * (bx * qy - by * qx)
         vol[m] += v6 / 6
         if (v6 <= 0) inward++
+        # |(b - a) x (c - a)| / 2
+        ux = bx - ax; uy = by - ay; uz = bz - az; wx2 = qx - ax; wy2 = qy - ay; wz2 = qz - az
+        tarea[m] += sqrt((uy * wz2 - uz * wy2) ^ 2 + (uz * wx2 - ux * wz2) ^ 2 + (ux * wy2 - uy * wx2) ^ 2) / 2
       }
       if (inward) fail(inward " triangle(s) not outward")
+      if (axes != "") {
+        # ellipsoid area: midpoint rule over r = (a sin t cos p, b sin t sin p, c cos t),
+        # |r_t x r_p| = sin t sqrt(b^2 c^2 sin^2 t cos^2 p + a^2 c^2 sin^2 t sin^2 p + a^2 b^2 cos^2 t)
+        nt = 600; np = 1200; earea = 0
+        for (it = 0; it < nt; it++) {
+          t = (it + 0.5) * pi / nt; st = sin(t); ct = cos(t)
+          for (ip = 0; ip < np; ip++) {
+            p = (ip + 0.5) * 2 * pi / np; cp = cos(p); sp = sin(p)
+            earea += st * sqrt((sa[2] * sa[3] * st * cp) ^ 2 + (sa[1] * sa[3] * st * sp) ^ 2 + (sa[1] * sa[2] * ct) ^ 2)
+          }
+        }
+        earea *= (pi / nt) * (2 * pi / np)
+        for (i in type) {
+          m = mol[i]
+          if (type[i] == 2) { wmass[m] += amass[i]; continue }
+          expect = rho0 * 4 / 3 * pi * sa[1] * sa[2] * sa[3] / nfl[m]
+          if (abs(amass[i] / expect - 1) > 1e-9) { fail("mass of fluid atom " i " " amass[i] ", formula gives " expect); break }
+        }
+        for (m = 1; m <= nmol; m++) {
+          if (wall_mass > 0) { if (abs(wmass[m] / (wall_mass * nv[m]) - 1) > 1e-9) fail("cell " m ": wall mass") }
+          else if (abs(wmass[m] / (rho0 * earea * 1e-6) - 1) > 1e-5) fail("cell " m ": wall mass " wmass[m] " vs rho0 area 1 um " rho0 * earea * 1e-6)
+          if (abs(tarea[m] / earea - 1) > vol_tol) fail("cell " m ": mesh area " tarea[m] " vs ellipsoid " earea)
+        }
+      } else
       for (i in type) {
         m = mol[i]
         if (type[i] == 1) expect = rho0 * 4 / 3 * pi * rad[m] ^ 3 / nfl[m]
@@ -100,13 +140,14 @@ check_data() {
         for (m = 1; m <= nmol; m++) if (n5[m] != 12) fail("cell " m ": " n5[m] + 0 " particles with 5 bonds, expected 12")
       }
       for (m = 1; m <= nmol; m++) {
-        exact = 4 / 3 * pi * rad[m] ^ 3
+        exact = axes != "" ? 4 / 3 * pi * sa[1] * sa[2] * sa[3] : 4 / 3 * pi * rad[m] ^ 3
         if (vol[m] <= 0) fail("cell " m ": enclosed volume " vol[m] " <= 0")
         if (vol_tol > 0 && abs(vol[m] / exact - 1) > vol_tol) fail("cell " m ": volume ratio " vol[m] / exact)
+        if (m == 1) exact1 = exact
       }
-      printf "  %d cell(s), %d atoms, %d bonds, %d triangles, gap %g\n", nmol, n_atoms, n_bonds, n_angles, gap
+      printf "  %d cell(s), %d atoms, %d bonds, %d triangles, gap %g, cell 1 volume / exact %.12f\n", nmol, n_atoms, n_bonds, n_angles, gap, vol[1] / exact1
       exit bad > 0
-    }' nmol_single="$6" geodesic="${7:-0}" rho0="${8:-1000}" wall_mass="${9:-0}" "$1"
+    }' nmol_single="$6" geodesic="${7:-0}" rho0="${8:-1000}" wall_mass="${9:-0}" axes="${10:-}" "$1"
 }
 
 # run NAME WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL -- cellgen args...
@@ -115,16 +156,22 @@ run() {
   local name=$1 wall=$2 fluid=$3 ftol=$4 vtol=$5 single=$6 geodesic=1 rho0=1000 wmass=0
   shift 7
   case " $* " in *" --mesh spiral "*) geodesic=0 ;; esac
-  local args=("$@") k
+  local args=("$@") k radius=75e-6 elong="" axes=""
   for ((k = 0; k + 1 < ${#args[@]}; k++)); do
-    case ${args[k]} in --rho0) rho0=${args[k + 1]} ;; --wall-mass) wmass=${args[k + 1]} ;; esac
+    case ${args[k]} in
+      --rho0) rho0=${args[k + 1]} ;; --wall-mass) wmass=${args[k + 1]} ;; --radius) radius=${args[k + 1]} ;;
+      --ellipsoid) axes=${args[k + 1]//:/ } ;; --elongation) elong=${args[k + 1]} ;;
+    esac
   done
+  # --elongation E: prolate along x, a/b = E, volume of the sphere of radius R: a = R E^(2/3), b = c = R E^(-1/3)
+  [ -z "$elong" ] || axes=$(awk -v r="$radius" -v e="$elong" 'BEGIN { printf "%.17g %.17g %.17g", r * e ^ (2 / 3), r * e ^ (-1 / 3), r * e ^ (-1 / 3) }')
   echo "[$name] cellgen $*"
   if "$bin" "$@" --out "$tmp/$name.data" >"$tmp/$name.log" 2>&1 &&
-    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single" "$geodesic" "$rho0" "$wmass"; then
+    check_data "$tmp/$name.data" "$wall" "$fluid" "$ftol" "$vtol" "$single" "$geodesic" "$rho0" "$wmass" "$axes" >"$tmp/$name.check"; then
+    cat "$tmp/$name.check"
     echo "  ok"
   else
-    cat "$tmp/$name.log"
+    cat "$tmp/$name.log" "$tmp/$name.check" 2>/dev/null
     failed=1
   fi
 }
@@ -153,6 +200,63 @@ run walls-only 1092 0 0 0.03 1 -- --nfluid 0
 run spiral 1091 1624 0.05 0.03 1 -- --mesh spiral
 run spiral-lattice 300 0 0 0.03 0 -- --mesh spiral --cells 2 1 2 --nwall 300 --dx 12e-6
 run spiral-tiny 4 10 0 0 1 -- --mesh spiral --nwall 4 --nfluid 10 --radius 1e-5
+# ellipsoids (all cells alike: no --radius-spread): the sphere mesh mapped onto the ellipsoid
+run ellipsoid 1092 1624 0.05 0.03 1 -- --elongation 1.45
+run ellipsoid-triaxial 792 300 0 0.03 1 -- --ellipsoid 30e-6:20e-6:15e-6 --nwall 800 --nfluid 300
+run ellipsoid-lattice 312 0 0 0.03 0 -- --ellipsoid 12e-6:10e-6:8e-6 --nwall 300 --dx 2e-6 --cells 2 2 1 --wall-mass 1e-13
+run ellipsoid-spiral 300 0 0 0.03 1 -- --mesh spiral --nwall 300 --dx 8e-6 --elongation 2
+run ellipsoid-conformal 1092 1624 0.05 0.03 1 -- --elongation 1.45 --map conformal
+run ellipsoid-conformal-oblate 312 0 0 0.03 1 -- --ellipsoid 20e-6:20e-6:12e-6 --nwall 300 --dx 3e-6 --map conformal
+
+# angle_change SPHERE.data MAPPED.data: the largest change of a triangle's angle (degrees) between two
+# files with the same atoms and triangles
+angle_change() {
+  awk 'function ang(x1, y1, z1, x2, y2, z2, x3, y3, z3,   ux, uy, uz, vx, vy, vz, cx, cy, cz) {
+      ux = x2 - x1; uy = y2 - y1; uz = z2 - z1; vx = x3 - x1; vy = y3 - y1; vz = z3 - z1
+      cx = uy * vz - uz * vy; cy = uz * vx - ux * vz; cz = ux * vy - uy * vx
+      return atan2(sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) * 180 / atan2(0, -1)
+    }
+    FNR == 1 { f++ }
+    /^[ \t]*$/ { next }
+    $1 == "Atoms" || $1 == "Bonds" || $1 == "Angles" || $1 == "CellAtoms" || $1 == "Masses" { sec = $1; next }
+    sec == "Atoms" && NF >= 6 { X[f, $1] = $4; Y[f, $1] = $5; Z[f, $1] = $6 }
+    sec == "Angles" && NF == 5 && f == 1 { n++; A[n] = $3; B[n] = $4; C[n] = $5 }
+    END {
+      for (t = 1; t <= n; t++) for (k = 0; k < 3; k++) {
+        i = k == 0 ? A[t] : k == 1 ? B[t] : C[t]; j = k == 0 ? B[t] : k == 1 ? C[t] : A[t]; l = k == 0 ? C[t] : k == 1 ? A[t] : B[t]
+        d = ang(X[1, i], Y[1, i], Z[1, i], X[1, j], Y[1, j], Z[1, j], X[1, l], Y[1, l], Z[1, l]) - \
+            ang(X[2, i], Y[2, i], Z[2, i], X[2, j], Y[2, j], Z[2, j], X[2, l], Y[2, l], Z[2, l])
+        if (d < 0) d = -d; if (d > worst) worst = d
+      }
+      printf "%.6f\n", worst
+    }' "$1" "$2"
+}
+
+echo "[conformal map] triangle angles kept: the largest change from the sphere mesh's below 2 deg at 1092 particles, falling below 0.6 x that at 4002 (first order); the affine map changes them by more than 15 deg"
+for nw in 1091 4000; do
+  "$bin" --nwall $nw --nfluid 0 --out "$tmp/s$nw.data" >/dev/null
+  "$bin" --nwall $nw --nfluid 0 --elongation 1.45 --map conformal --out "$tmp/c$nw.data" >/dev/null
+  "$bin" --nwall $nw --nfluid 0 --elongation 1.45 --out "$tmp/a$nw.data" >/dev/null
+done
+c1=$(angle_change "$tmp/s1091.data" "$tmp/c1091.data")
+c4=$(angle_change "$tmp/s4000.data" "$tmp/c4000.data")
+a1=$(angle_change "$tmp/s1091.data" "$tmp/a1091.data")
+if awk -v c1="$c1" -v c4="$c4" -v a1="$a1" 'BEGIN { exit !(c1 < 2 && c4 < 0.6 * c1 && a1 > 15) }'; then
+  echo "  ok: conformal $c1 (1092), $c4 (4002); affine $a1 (1092)"
+else
+  echo "  FAIL: conformal $c1 (1092), $c4 (4002); affine $a1 (1092)"
+  failed=1
+fi
+
+echo "[ellipsoid volume] x -> (a x, b y, c z) scales volumes by abc: the mesh's V / (4/3 pi a b c) is the sphere mesh's V / (4/3 pi R^3)"
+vs=$(sed -n 's/.*volume \/ exact \([0-9.]*\).*/\1/p' "$tmp/default.check")
+ve=$(sed -n 's/.*volume \/ exact \([0-9.]*\).*/\1/p' "$tmp/ellipsoid.check")
+if [ -n "$vs" ] && awk -v s="$vs" -v e="$ve" 'BEGIN { d = s - e; exit !(d < 1e-10 && d > -1e-10) }'; then
+  echo "  ok: $vs (sphere) vs $ve (ellipsoid)"
+else
+  echo "  FAIL: sphere $vs, ellipsoid $ve"
+  failed=1
+fi
 
 echo "[geodesic class] the (h, k) chosen for --nwall (nearest 10T+2; ties: class I, smaller k)"
 for c in "4 1 0 12" "27 1 1 32" "37 2 0 42" "300 5 1 312" "500 7 0 492" "912 9 1 912" \
@@ -205,6 +309,15 @@ expect_error bad-mesh -- --mesh cubic
 expect_error margin-zero -- --margin 0
 expect_error margin-negative -- --margin -1
 expect_error margin-not-a-number -- --margin 1R
+expect_error ellipsoid-two-axes -- --ellipsoid 3e-5:2e-5
+expect_error ellipsoid-negative-axis -- --ellipsoid 3e-5:-2e-5:1e-5
+expect_error ellipsoid-and-radius -- --ellipsoid 3e-5:2e-5:1e-5 --radius 1e-5
+expect_error ellipsoid-and-elongation -- --ellipsoid 3e-5:2e-5:1e-5 --elongation 1.5
+expect_error elongation-below-1 -- --elongation 0.5
+expect_error ellipsoid-gap-too-large -- --ellipsoid 3e-5:2e-5:1e-5 --gap 1.2e-5
+expect_error conformal-triaxial -- --ellipsoid 3e-5:2e-5:1e-5 --map conformal
+expect_error conformal-sphere -- --map conformal
+expect_error bad-map -- --elongation 1.45 --map stretched
 
 if [ "$failed" -ne 0 ]; then
   echo "test_cellgen: FAILED"

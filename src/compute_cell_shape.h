@@ -1,0 +1,62 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   compute cell/shape: one row per cell of the 2-D descriptors of a section through it, as image
+   analysis reports them, and of the wall's wrinkling (doc/compute_cell_shape.md, doc/model.md §5.11)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_COMPUTE_CELL_SHAPE_H
+#define LMP_COMPUTE_CELL_SHAPE_H
+
+#include "compute.h"
+
+#include <memory>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class CellReduce;
+class CellTriangles;
+
+class ComputeCellShape : public Compute {
+ public:
+  ComputeCellShape(class LAMMPS *, int, char **);
+  ~ComputeCellShape() override;
+  void init() override;
+  void compute_array() override;
+
+  // columns of the global array
+  enum {
+    ID,
+    AREA,
+    PERIMETER,
+    FERET,
+    MINFERET,
+    MAJOR,
+    MINOR,
+    CIRCULARITY,
+    ROUNDNESS,
+    ASPECT,
+    SOLIDITY,
+    COMPACTNESS,
+    LOOPS,
+    HULLAREA,
+    WRINKLING,
+    HULLFILL,
+    NCOLUMN
+  };
+
+ private:
+  enum { PLANE_X, PLANE_Y, PLANE_Z, PLANE_PRINCIPAL };
+  std::unique_ptr<CellReduce> cells;
+  std::unique_ptr<CellTriangles> walls;    // every cell's wall triangles, on every rank
+  int plane;
+  double offset;
+  std::vector<double> mine, rows;
+  std::vector<tagint> corners;
+
+  void measure(int c, double *row);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
