@@ -25,9 +25,11 @@ constexpr const char *kUsage =
     "usage: cellgen [--radius R=75e-6] [--nwall N=1091] [--mesh icosahedral|spiral]\n"
     "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
     "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
-    "               [--margin F=0.5] --out FILE.data\n"
+    "               [--margin F=0.5] [--dihedrals] --out FILE.data\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
+    "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
+    "            dihedral_style cell/bending.\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
 
 struct UsageError : std::runtime_error {
@@ -47,6 +49,7 @@ struct Options {
   double spread = 0.0;
   double margin = 0.5;
   std::uint64_t seed = 1;
+  bool dihedrals = false;
   std::string out;
 };
 
@@ -122,6 +125,7 @@ const std::map<std::string, Handler> &optionHandlers()
       {"--seed",
        [](ArgReader &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
       {"--out", [](ArgReader &a, Options &o) { o.out = a.word(); }},
+      {"--dihedrals", [](ArgReader &, Options &o) { o.dihedrals = true; }},
       {"--cells",
        [](ArgReader &a, Options &o) {
          for (long &c : o.cells) c = a.integer();
@@ -193,21 +197,24 @@ double typeMass(const System &sys, ParticleType type)
   return first->mass;
 }
 
-void writeHeader(std::FILE *f, const System &sys, const std::string &comment)
+void writeHeader(std::FILE *f, const System &sys, const std::string &comment, size_t ndihedrals)
 {
   std::fprintf(f, "%s\n\n", comment.c_str());
   std::fprintf(f, "%zu atoms\n%zu bonds\n%zu angles\n", sys.particles.size(), sys.bonds.size(),
                sys.triangles.size());
-  std::fprintf(f, "2 atom types\n1 bond types\n1 angle types\n\n");
+  if (ndihedrals > 0) std::fprintf(f, "%zu dihedrals\n", ndihedrals);
+  std::fprintf(f, "2 atom types\n1 bond types\n1 angle types\n");
+  if (ndihedrals > 0) std::fprintf(f, "1 dihedral types\n");
+  std::fprintf(f, "\n");
   const char *names[3] = {"x", "y", "z"};
   for (int d = 0; d < 3; ++d)
     std::fprintf(f, "%.15g %.15g %slo %shi\n", sys.lo[d], sys.hi[d], names[d], names[d]);
   std::fprintf(f, "\nMasses\n\n1 %.15g\n2 %.15g\n", typeMass(sys, kFluid), typeMass(sys, kWall));
 }
 
-void writeSections(std::FILE *f, const System &sys)
+void writeSections(std::FILE *f, const System &sys, const char *atomStyle)
 {
-  std::fprintf(f, "\nAtoms # angle\n\n");
+  std::fprintf(f, "\nAtoms # %s\n\n", atomStyle);
   for (size_t i = 0; i < sys.particles.size(); ++i) {
     const Particle &p = sys.particles[i];
     std::fprintf(f, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
@@ -230,12 +237,25 @@ void writeSections(std::FILE *f, const System &sys)
   }
 }
 
-void writeData(const std::string &path, const System &sys, const std::string &comment)
+// Dihedrals section (--dihedrals): one per wall edge, a b c d with (a, b, c) and (d, c, b) the
+// outward triangles sharing the edge b-c (dihedral_style cell/bending)
+void writeDihedrals(std::FILE *f, const std::vector<Quad> &dihedrals)
+{
+  std::fprintf(f, "\nDihedrals\n\n");
+  for (size_t i = 0; i < dihedrals.size(); ++i) {
+    const Quad &q = dihedrals[i];
+    std::fprintf(f, "%zu 1 %d %d %d %d\n", i + 1, q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
+  }
+}
+
+void writeData(const std::string &path, const System &sys, const std::string &comment,
+               const std::vector<Quad> &dihedrals)
 {
   File f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) throw std::runtime_error("cannot open " + path + " for writing");
-  writeHeader(f.get(), sys, comment);
-  writeSections(f.get(), sys);
+  writeHeader(f.get(), sys, comment, dihedrals.size());
+  writeSections(f.get(), sys, dihedrals.empty() ? "angle" : "molecular");
+  if (!dihedrals.empty()) writeDihedrals(f.get(), dihedrals);
   if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
     throw std::runtime_error("error writing " + path);
 }
@@ -312,9 +332,9 @@ void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, c
   std::printf("wall mesh: %s: %zu wall particles per cell (--nwall %ld)\n",
               mesh.description.c_str(), perCell, o.nwall);
   std::printf("particles: %ld fluid (%ld to %ld per cell), %ld wall (%zu per cell); %zu bonds, "
-              "%zu triangles\n",
+              "%zu triangles%s\n",
               t.fluid, t.minFluid, t.maxFluid, t.wall, perCell, sys.bonds.size(),
-              sys.triangles.size());
+              sys.triangles.size(), o.dihedrals ? ", one dihedral per bond" : "");
   std::printf("wall valence (particles x bonds): %s\n", valenceSummary(st).c_str());
   std::printf("wall bond length: min %g, mean %g, max %g m (max/min %.3f)\n", t.minEdge, t.meanEdge,
               t.maxEdge, t.maxEdge / t.minEdge);
@@ -361,7 +381,8 @@ void run(const Options &o, const std::string &args)
   const System sys = buildSystem(unit, cells, params);
   const SurfaceStats stats = surfaceStats(unit);
   const Totals t = totals(sys, cells, stats);
-  writeData(o.out, sys, comment(o, args, sp, t));
+  writeData(o.out, sys, comment(o, args, sp, t),
+            o.dihedrals ? wallDihedrals(sys) : std::vector<Quad>());
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   printSummary(o, sp, sys, t, mesh, stats, elapsed.count());
 }
