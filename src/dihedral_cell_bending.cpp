@@ -138,8 +138,8 @@ void DihedralCellBending::compute(int eflag, int vflag)
                  "zero area",
                  tag[i1], tag[i2], tag[i3], tag[i4]);
 
-    // k = 2 kappa l0^2 / (A1 + A2), reference edge length and triangle areas (doc/model.md §4.2)
-    const double k = 4.0 * kappa[type] * h0.ee / (sqrt(h0.nn1) + sqrt(h0.nn2));
+    // k = kappa l0^2 / (A1 + A2), reference edge length and triangle areas (doc/model.md §4.2)
+    const double k = 2.0 * kappa[type] * h0.ee / (sqrt(h0.nn1) + sqrt(h0.nn2));
     const double c0 = reference[type] == FLAT ? 1.0 : h0.c;
     const double s0 = reference[type] == FLAT ? 0.0 : h0.s;
 

@@ -212,9 +212,21 @@ void writeHeader(std::FILE *f, const System &sys, const std::string &comment, si
   std::fprintf(f, "\nMasses\n\n1 %.15g\n2 %.15g\n", typeMass(sys, kFluid), typeMass(sys, kWall));
 }
 
-void writeSections(std::FILE *f, const System &sys, const char *atomStyle)
+// Dihedrals section (--dihedrals): one per wall edge, a b c d with (a, b, c) and (d, c, b) the
+// outward triangles sharing the edge b-c (dihedral_style cell/bending)
+void writeDihedrals(std::FILE *f, const std::vector<Quad> &dihedrals)
 {
-  std::fprintf(f, "\nAtoms # %s\n\n", atomStyle);
+  std::fprintf(f, "\nDihedrals\n\n");
+  for (size_t i = 0; i < dihedrals.size(); ++i) {
+    const Quad &q = dihedrals[i];
+    std::fprintf(f, "%zu 1 %d %d %d %d\n", i + 1, q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
+  }
+}
+
+// Dihedrals, if any, come before CellAtoms: LAMMPS 29 Sep 2021 reads no section after a fix section
+void writeSections(std::FILE *f, const System &sys, const std::vector<Quad> &dihedrals)
+{
+  std::fprintf(f, "\nAtoms # %s\n\n", dihedrals.empty() ? "angle" : "molecular");
   for (size_t i = 0; i < sys.particles.size(); ++i) {
     const Particle &p = sys.particles[i];
     std::fprintf(f, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
@@ -228,6 +240,7 @@ void writeSections(std::FILE *f, const System &sys, const char *atomStyle)
     const Tri &t = sys.triangles[i];
     std::fprintf(f, "%zu 1 %d %d %d\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
   }
+  if (!dihedrals.empty()) writeDihedrals(f, dihedrals);
   const std::vector<double> aref = bondAreaShares(sys);
   std::fprintf(f, "\nCellAtoms # rmass xref(3) aref\n\n");
   for (size_t i = 0; i < sys.particles.size(); ++i) {
@@ -237,25 +250,13 @@ void writeSections(std::FILE *f, const System &sys, const char *atomStyle)
   }
 }
 
-// Dihedrals section (--dihedrals): one per wall edge, a b c d with (a, b, c) and (d, c, b) the
-// outward triangles sharing the edge b-c (dihedral_style cell/bending)
-void writeDihedrals(std::FILE *f, const std::vector<Quad> &dihedrals)
-{
-  std::fprintf(f, "\nDihedrals\n\n");
-  for (size_t i = 0; i < dihedrals.size(); ++i) {
-    const Quad &q = dihedrals[i];
-    std::fprintf(f, "%zu 1 %d %d %d %d\n", i + 1, q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
-  }
-}
-
 void writeData(const std::string &path, const System &sys, const std::string &comment,
                const std::vector<Quad> &dihedrals)
 {
   File f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) throw std::runtime_error("cannot open " + path + " for writing");
   writeHeader(f.get(), sys, comment, dihedrals.size());
-  writeSections(f.get(), sys, dihedrals.empty() ? "angle" : "molecular");
-  if (!dihedrals.empty()) writeDihedrals(f.get(), dihedrals);
+  writeSections(f.get(), sys, dihedrals);
   if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
     throw std::runtime_error("error writing " + path);
 }

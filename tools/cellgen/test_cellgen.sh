@@ -111,7 +111,8 @@ check_data() {
 # check_dihedrals FILE: with --dihedrals, the header counts the dihedrals (one type), the Atoms
 # section is tagged molecular, every wall bond b-c is the middle of exactly one dihedral a b c d and
 # no dihedral has another middle, and (a, b, c) and (d, c, b) are wall triangles as written in
-# Angles (up to cyclic order, so both outward: the orientation is consistent).
+# Angles (up to cyclic order, so both outward: the orientation is consistent); Dihedrals comes
+# before CellAtoms.
 check_dihedrals() {
   awk '
     function fail(msg) { print "  FAIL: " msg; bad++ }
@@ -121,6 +122,8 @@ check_dihedrals() {
     section == "" && $2 == "dihedral" && $3 == "types" { h_types = $1; next }
     $1 == "Atoms" { section = $1; style = $3; next }
     $1 == "Masses" || $1 == "Bonds" || $1 == "Angles" || $1 == "Dihedrals" || $1 == "CellAtoms" {
+      # LAMMPS 29 Sep 2021 reads no section after the fix section CellAtoms
+      if ($1 == "Dihedrals" && section == "CellAtoms") fail("Dihedrals after CellAtoms")
       section = $1; next
     }
     section == "Bonds" { bond[ekey($3, $4)] = 1; n_bonds++ }
@@ -156,7 +159,7 @@ run_dihedrals() {
     "$bin" "$@" --out "$tmp/$name-plain.data" >/dev/null 2>&1 &&
     check_data "$tmp/$name.data" "$wall" 0 0 0.03 0 "$([[ " $* " == *" --mesh spiral "* ]] && echo 0 || echo 1)" &&
     check_dihedrals "$tmp/$name.data" &&
-    cmp -s <(awk '$1 == "Dihedrals" { skip = 1 } !skip && NR > 1 && NF && $2 != "dihedrals" &&
+    cmp -s <(awk '$1 == "Dihedrals" { skip = 1 } $1 == "CellAtoms" { skip = 0 } !skip && NR > 1 && NF && $2 != "dihedrals" &&
                  !($2 == "dihedral" && $3 == "types") && $1 != "Atoms"' "$tmp/$name.data") \
            <(awk 'NR > 1 && NF && $1 != "Atoms"' "$tmp/$name-plain.data"); then
     echo "  ok"
