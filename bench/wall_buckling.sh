@@ -7,7 +7,7 @@
 # with a membrane-only wall (bending 1e-9 of it) for comparison.
 #
 #   bash bench/wall_buckling.sh [nwall ...]    resolutions (default: 642 1442; 2562 takes ~3 min)
-# Environment: STEPS (bisection steps, default 4: brackets of 8 % with bending, 26 % without),
+# Environment: STEPS (bisection steps, default 4: brackets of 3 % with bending, 19 % without),
 # NOISE (start displacement / wall spacing, default 1e-3), BENDING ("yes no", default both), CELLSPH_BUILD (build folder), OUT (work folder, default
 # /tmp/cellsph-bench/wall_buckling). Prints a table.
 set -euo pipefail
@@ -50,8 +50,8 @@ echo "|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|"
 for n in ${*:-642 1442}; do
   for bending in ${BENDING:-yes no}; do
     start=$(date +%s)
-    if [ "$bending" = yes ]; then read -r lo hi < <(bracket "$n" yes 0.6 2.0)
-    else read -r lo hi < <(bracket "$n" no 0.02 0.8); fi
+    if [ "$bending" = yes ]; then read -r lo hi < <(bracket "$n" yes 0.8 1.25)
+    else read -r lo hi < <(bracket "$n" no 0.05 0.8); fi
     a=$(sed -E 's/.* a=([^ ]+) .*/\1/' "$out/last")
     nat=$(sed -E 's/.* n=([0-9]+) .*/\1/' "$out/last")
     python3 - "$nat" "$a" "$bending" "$lo" "$hi" "$(( $(date +%s) - start ))" <<'PY'
