@@ -195,6 +195,14 @@ void DihedralCellBending::allocate()
   }
 }
 
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::settings(int narg, char **arg)
+{
+  if (narg > 0)
+    error->all(FLERR, "Dihedral_style cell/bending takes no arguments, got '{}'", arg[0]);
+}
+
 /* ----------------------------------------------------------------------
    dihedral_coeff N G t0 [reference xref|flat]
    dihedral_coeff N file <parameter file> [reference xref|flat]     (keys wall_G, wall_t0)

@@ -17,6 +17,7 @@ class DihedralCellBending : public Dihedral {
   DihedralCellBending(class LAMMPS *);
   ~DihedralCellBending() override;
   void compute(int, int) override;
+  void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
   void write_restart(FILE *) override;
