@@ -8,7 +8,9 @@
 #
 #   bash bench/wall_buckling.sh [nwall ...]    resolutions (default: 642 1442; 2562 takes ~3 min)
 # Environment: STEPS (bisection steps, default 4: brackets of 3 % with bending, 19 % without),
-# NOISE (start displacement / wall spacing, default 1e-3), BENDING ("yes no", default both), CELLSPH_BUILD (build folder), OUT (work folder, default
+# NOISE (start displacement / wall spacing, default 1e-3), BENDING ("yes no", default both),
+# LO, HI (the bracket with bending, default 0.8 1.25; STEPS=0 runs just these two: e.g.
+# STEPS=0 LO=0.92 HI=0.94 BENDING=yes bash bench/wall_buckling.sh 4002 10242, about 6 min), CELLSPH_BUILD (build folder), OUT (work folder, default
 # /tmp/cellsph-bench/wall_buckling). Prints a table.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -50,7 +52,7 @@ echo "|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|"
 for n in ${*:-642 1442}; do
   for bending in ${BENDING:-yes no}; do
     start=$(date +%s)
-    if [ "$bending" = yes ]; then read -r lo hi < <(bracket "$n" yes 0.8 1.25)
+    if [ "$bending" = yes ]; then read -r lo hi < <(bracket "$n" yes "${LO:-0.8}" "${HI:-1.25}")
     else read -r lo hi < <(bracket "$n" no 0.05 0.8); fi
     a=$(sed -E 's/.* a=([^ ]+) .*/\1/' "$out/last")
     nat=$(sed -E 's/.* n=([0-9]+) .*/\1/' "$out/last")

@@ -1,5 +1,6 @@
 // cellgen: writes the initial geometry of cellsph plant cells (fluid-filled spheres bounded by a
-// triangulated wall) as a LAMMPS data file for atom_style angle. See README.md.
+// triangulated wall) as a LAMMPS data file for atom_style angle (molecular with --dihedrals).
+// See README.md.
 #include "geometry.h"
 
 #include <algorithm>
