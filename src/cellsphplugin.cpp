@@ -13,6 +13,7 @@
 #include "bond_cell_neohookean.h"
 #include "compute_cell_props.h"
 #include "compute_cell_shape.h"
+#include "dihedral_cell_bending.h"
 #include "fix_cell_pressure.h"
 #include "fix_cell_turgor.h"
 #include "pair_cell_sph.h"
@@ -41,16 +42,18 @@ template <class Style> void *create_v2(void *lmp, int narg, char **arg)
 }
 
 struct StyleEntry {
-  const char *kind;    // pair, bond, fix, compute
+  const char *kind;    // pair, bond, dihedral, fix, compute
   const char *name;
   const char *info;
-  lammpsplugin_factory1 *v1;    // pair and bond styles
+  lammpsplugin_factory1 *v1;    // pair, bond and dihedral styles
   lammpsplugin_factory2 *v2;    // fix and compute styles
 };
 
 const StyleEntry STYLES[] = {
     {"bond", "cell/neohookean", "Neo-Hookean cell-wall bond with damping",
      &create_v1<BondCellNeoHookean>, nullptr},
+    {"dihedral", "cell/bending", "bending stiffness of the cell wall across each wall edge",
+     &create_v1<DihedralCellBending>, nullptr},
     {"fix", "cell/pressure", "imposed turgor pressure on closed cell walls", nullptr,
      &create_v2<FixCellPressure>},
     {"fix", "cell/turgor", "water transfer through the cell wall (turgor, osmosis, permeability)",

@@ -1,5 +1,6 @@
 // cellgen: writes the initial geometry of cellsph plant cells (fluid-filled spheres bounded by a
-// triangulated wall) as a LAMMPS data file for atom_style angle. See README.md.
+// triangulated wall) as a LAMMPS data file for atom_style angle (molecular with --dihedrals).
+// See README.md.
 #include "geometry.h"
 
 #include <algorithm>
@@ -27,7 +28,7 @@ constexpr const char *kUsage =
     "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
     "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
     "               [--margin F=0.5] [--ellipsoid A:B:C | --elongation E]\n"
-    "               [--map affine|conformal] --out FILE.data\n"
+    "               [--map affine|conformal] [--dihedrals] --out FILE.data\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
     "--ellipsoid A:B:C: semi-axes along x, y, z (replaces --radius); --elongation E: prolate along "
@@ -35,6 +36,8 @@ constexpr const char *kUsage =
     "            a/b = E, with the volume of the sphere of --radius; --map: how the sphere mesh\n"
     "            goes onto the ellipsoid (affine x -> (a x, b y, c z), or conformal for "
     "spheroids).\n"
+    "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
+    "            dihedral_style cell/bending.\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
 
 struct UsageError : std::runtime_error {
@@ -54,6 +57,7 @@ struct Options {
   double spread = 0.0;
   double margin = 0.5;
   std::uint64_t seed = 1;
+  bool dihedrals = false;
   std::string out;
   bool radiusGiven = false;
   std::optional<Vec3> ellipsoid;    // --ellipsoid semi-axes
@@ -169,6 +173,7 @@ const std::map<std::string, Handler> &optionHandlers()
       {"--seed",
        [](ArgReader &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
       {"--out", [](ArgReader &a, Options &o) { o.out = a.word(); }},
+      {"--dihedrals", [](ArgReader &, Options &o) { o.dihedrals = true; }},
       {"--cells",
        [](ArgReader &a, Options &o) {
          for (long &c : o.cells) c = a.integer();
@@ -269,21 +274,36 @@ double typeMass(const System &sys, ParticleType type)
   return first->mass;
 }
 
-void writeHeader(std::FILE *f, const System &sys, const std::string &comment)
+void writeHeader(std::FILE *f, const System &sys, const std::string &comment, size_t ndihedrals)
 {
   std::fprintf(f, "%s\n\n", comment.c_str());
   std::fprintf(f, "%zu atoms\n%zu bonds\n%zu angles\n", sys.particles.size(), sys.bonds.size(),
                sys.triangles.size());
-  std::fprintf(f, "2 atom types\n1 bond types\n1 angle types\n\n");
+  if (ndihedrals > 0) std::fprintf(f, "%zu dihedrals\n", ndihedrals);
+  std::fprintf(f, "2 atom types\n1 bond types\n1 angle types\n");
+  if (ndihedrals > 0) std::fprintf(f, "1 dihedral types\n");
+  std::fprintf(f, "\n");
   const char *names[3] = {"x", "y", "z"};
   for (int d = 0; d < 3; ++d)
     std::fprintf(f, "%.15g %.15g %slo %shi\n", sys.lo[d], sys.hi[d], names[d], names[d]);
   std::fprintf(f, "\nMasses\n\n1 %.15g\n2 %.15g\n", typeMass(sys, kFluid), typeMass(sys, kWall));
 }
 
-void writeSections(std::FILE *f, const System &sys)
+// Dihedrals section (--dihedrals): one per wall edge, a b c d with (a, b, c) and (d, c, b) the
+// outward triangles sharing the edge b-c (dihedral_style cell/bending)
+void writeDihedrals(std::FILE *f, const std::vector<Quad> &dihedrals)
 {
-  std::fprintf(f, "\nAtoms # angle\n\n");
+  std::fprintf(f, "\nDihedrals\n\n");
+  for (size_t i = 0; i < dihedrals.size(); ++i) {
+    const Quad &q = dihedrals[i];
+    std::fprintf(f, "%zu 1 %d %d %d %d\n", i + 1, q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
+  }
+}
+
+// Dihedrals, if any, come before CellAtoms: LAMMPS 29 Sep 2021 reads no section after a fix section
+void writeSections(std::FILE *f, const System &sys, const std::vector<Quad> &dihedrals)
+{
+  std::fprintf(f, "\nAtoms # %s\n\n", dihedrals.empty() ? "angle" : "molecular");
   for (size_t i = 0; i < sys.particles.size(); ++i) {
     const Particle &p = sys.particles[i];
     std::fprintf(f, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
@@ -297,6 +317,7 @@ void writeSections(std::FILE *f, const System &sys)
     const Tri &t = sys.triangles[i];
     std::fprintf(f, "%zu 1 %d %d %d\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
   }
+  if (!dihedrals.empty()) writeDihedrals(f, dihedrals);
   const std::vector<double> aref = bondAreaShares(sys);
   std::fprintf(f, "\nCellAtoms # rmass xref(3) aref\n\n");
   for (size_t i = 0; i < sys.particles.size(); ++i) {
@@ -306,12 +327,13 @@ void writeSections(std::FILE *f, const System &sys)
   }
 }
 
-void writeData(const std::string &path, const System &sys, const std::string &comment)
+void writeData(const std::string &path, const System &sys, const std::string &comment,
+               const std::vector<Quad> &dihedrals)
 {
   File f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) throw std::runtime_error("cannot open " + path + " for writing");
-  writeHeader(f.get(), sys, comment);
-  writeSections(f.get(), sys);
+  writeHeader(f.get(), sys, comment, dihedrals.size());
+  writeSections(f.get(), sys, dihedrals);
   if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
     throw std::runtime_error("error writing " + path);
 }
@@ -393,9 +415,9 @@ void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, c
   std::printf("wall mesh: %s: %zu wall particles per cell (--nwall %ld)\n",
               mesh.description.c_str(), perCell, o.nwall);
   std::printf("particles: %ld fluid (%ld to %ld per cell), %ld wall (%zu per cell); %zu bonds, "
-              "%zu triangles\n",
+              "%zu triangles%s\n",
               t.fluid, t.minFluid, t.maxFluid, t.wall, perCell, sys.bonds.size(),
-              sys.triangles.size());
+              sys.triangles.size(), o.dihedrals ? ", one dihedral per bond" : "");
   std::printf("wall valence (particles x bonds): %s\n", valenceSummary(st).c_str());
   std::printf("wall bond length: min %g, mean %g, max %g m (max/min %.3f)\n", t.minEdge, t.meanEdge,
               t.maxEdge, t.maxEdge / t.minEdge);
@@ -456,7 +478,8 @@ void run(const Options &o, const std::string &args)
   const System sys = buildSystem(unit, cells, params);
   const SurfaceStats stats = surfaceStats(unit);
   const Totals t = totals(sys, cells, stats, o.shape);
-  writeData(o.out, sys, comment(o, args, sp, t));
+  writeData(o.out, sys, comment(o, args, sp, t),
+            o.dihedrals ? wallDihedrals(sys) : std::vector<Quad>());
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   printSummary(o, sp, sys, t, mesh, stats, elapsed.count());
 }

@@ -711,4 +711,25 @@ std::vector<double> bondAreaShares(const System &sys)
   return share;
 }
 
+std::vector<Quad> wallDihedrals(const System &sys)
+{
+  // third vertex of the triangle holding each directed edge (i, j)
+  std::map<std::pair<int, int>, int> apex;
+  for (const Tri &t : sys.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (!apex.emplace(std::make_pair(t[k], t[(k + 1) % 3]), t[(k + 2) % 3]).second)
+        throw std::runtime_error("wall edge in two triangles in the same direction");
+  std::vector<Quad> quads;
+  quads.reserve(sys.bonds.size());
+  for (const Edge &e : sys.bonds) {
+    const auto forward = apex.find({e[0], e[1]}), backward = apex.find({e[1], e[0]});
+    if (forward == apex.end() || backward == apex.end())
+      throw std::runtime_error("wall edge " + std::to_string(e[0] + 1) + "-" +
+                               std::to_string(e[1] + 1) + " is not shared by two triangles");
+    // (a, b, c) holds b -> c, (d, c, b) holds c -> b
+    quads.push_back({forward->second, e[0], e[1], backward->second});
+  }
+  return quads;
+}
+
 }    // namespace cellgen

@@ -155,4 +155,10 @@ System buildSystem(const Surface &unit, const std::vector<CellSpec> &cells,
 // sums to the wall area over all bonds; bond_style cell/neohookean weights each bond by it.
 std::vector<double> bondAreaShares(const System &sys);
 
+// Wall dihedrals (--dihedrals): one per wall edge b-c, as (a, b, c, d) with (a, b, c) and (d, c, b)
+// the two outward wall triangles sharing it (0-based indices), in the order of sys.bonds; b < c.
+// Throws unless every edge lies in exactly one triangle in each direction (a closed wall).
+using Quad = std::array<int, 4>;
+std::vector<Quad> wallDihedrals(const System &sys);
+
 }    // namespace cellgen

@@ -28,9 +28,8 @@ check_data() {
     section == "" && $2 == "atoms" { h_atoms = $1; next }
     section == "" && $2 == "bonds" { h_bonds = $1; next }
     section == "" && $2 == "angles" { h_angles = $1; next }
-    $1 == "Masses" || $1 == "Atoms" || $1 == "Bonds" || $1 == "Angles" || $1 == "CellAtoms" {
-      section = $1; next
-    }
+    $1 == "Masses" || $1 == "Atoms" || $1 == "Bonds" || $1 == "Angles" || $1 == "CellAtoms" ||
+      $1 == "Dihedrals" { section = $1; next }
     section == "Masses" { tmass[$1] = $2 }
     section == "Atoms" {
       n_atoms++; mol[$1] = $2; type[$1] = $3; x[$1] = $4; y[$1] = $5; z[$1] = $6; xs[$1] = $4 " " $5 " " $6
@@ -150,6 +149,68 @@ check_data() {
     }' nmol_single="$6" geodesic="${7:-0}" rho0="${8:-1000}" wall_mass="${9:-0}" axes="${10:-}" "$1"
 }
 
+# check_dihedrals FILE: with --dihedrals, the header counts the dihedrals (one type), the Atoms
+# section is tagged molecular, every wall bond b-c is the middle of exactly one dihedral a b c d and
+# no dihedral has another middle, and (a, b, c) and (d, c, b) are wall triangles as written in
+# Angles (up to cyclic order, so both outward: the orientation is consistent); Dihedrals comes
+# before CellAtoms.
+check_dihedrals() {
+  awk '
+    function fail(msg) { print "  FAIL: " msg; bad++ }
+    function ekey(i, j) { return (i < j) ? i " " j : j " " i }
+    /^[ \t]*$/ { next }
+    section == "" && $2 == "dihedrals" { h_dih = $1; next }
+    section == "" && $2 == "dihedral" && $3 == "types" { h_types = $1; next }
+    $1 == "Atoms" { section = $1; style = $3; next }
+    $1 == "Masses" || $1 == "Bonds" || $1 == "Angles" || $1 == "Dihedrals" || $1 == "CellAtoms" {
+      # LAMMPS 29 Sep 2021 reads no section after the fix section CellAtoms
+      if ($1 == "Dihedrals" && section == "CellAtoms") fail("Dihedrals after CellAtoms")
+      section = $1; next
+    }
+    section == "Bonds" { bond[ekey($3, $4)] = 1; n_bonds++ }
+    section == "Angles" { tri[$3 " " $4 " " $5] = tri[$4 " " $5 " " $3] = tri[$5 " " $3 " " $4] = 1 }
+    section == "Dihedrals" {
+      n_dih++
+      if ($2 != 1) fail("dihedral " $1 " has type " $2)
+      k = ekey($4, $5)
+      if (!(k in bond)) fail("dihedral " $1 ": middle " k " is not a bond")
+      if (mid[k]++) fail("edge " k " is the middle of two dihedrals")
+      if (!(($3 " " $4 " " $5) in tri)) fail("dihedral " $1 ": (a, b, c) = " $3 " " $4 " " $5 " is not an outward triangle")
+      if (!(($6 " " $5 " " $4) in tri)) fail("dihedral " $1 ": (d, c, b) = " $6 " " $5 " " $4 " is not an outward triangle")
+      if ($3 == $6) fail("dihedral " $1 ": a = d")
+    }
+    END {
+      if (style != "molecular") fail("Atoms section tagged " style ", expected molecular")
+      if (h_types != 1) fail("dihedral types " h_types ", expected 1")
+      if (n_dih != h_dih) fail("dihedral count " n_dih " vs header " h_dih)
+      if (n_dih != n_bonds) fail(n_dih " dihedrals for " n_bonds " bonds")
+      for (k in bond) if (!(k in mid)) { fail("bond " k " has no dihedral"); break }
+      printf "  %d dihedrals, one per bond, both triangles outward\n", n_dih
+      exit bad > 0
+    }' "$1"
+}
+
+# run_dihedrals NAME WALL_PER_CELL -- cellgen args...: --dihedrals adds the Dihedrals section and
+# changes nothing else (the file without --dihedrals, minus the header lines and the Atoms tag)
+run_dihedrals() {
+  local name=$1 wall=$2
+  shift 3
+  echo "[$name] cellgen --dihedrals $*"
+  if "$bin" "$@" --dihedrals --out "$tmp/$name.data" >"$tmp/$name.log" 2>&1 &&
+    "$bin" "$@" --out "$tmp/$name-plain.data" >/dev/null 2>&1 &&
+    check_data "$tmp/$name.data" "$wall" 0 0 0.03 0 "$([[ " $* " == *" --mesh spiral "* ]] && echo 0 || echo 1)" &&
+    check_dihedrals "$tmp/$name.data" &&
+    cmp -s <(awk '$1 == "Dihedrals" { skip = 1 } $1 == "CellAtoms" { skip = 0 } !skip && NR > 1 && NF && $2 != "dihedrals" &&
+                 !($2 == "dihedral" && $3 == "types") && $1 != "Atoms"' "$tmp/$name.data") \
+           <(awk 'NR > 1 && NF && $1 != "Atoms"' "$tmp/$name-plain.data"); then
+    echo "  ok"
+  else
+    echo "  FAIL (or the file differs from the one without --dihedrals beyond the dihedrals)"
+    cat "$tmp/$name.log"
+    failed=1
+  fi
+}
+
 # run NAME WALL_PER_CELL FLUID_TARGET FLUID_TOL VOLUME_TOL SINGLE_CELL -- cellgen args...
 # Without --mesh spiral the wall must be a geodesic icosahedron (12 five-bonded particles).
 run() {
@@ -257,6 +318,11 @@ else
   echo "  FAIL: sphere $vs, ellipsoid $ve"
   failed=1
 fi
+
+# --dihedrals (dihedral_style cell/bending): one dihedral per wall edge, orientation consistent
+run_dihedrals dihedrals 1092 -- --nfluid 0
+run_dihedrals dihedrals-fluid-lattice 312 -- --cells 2 1 1 --nwall 300 --dx 12e-6
+run_dihedrals dihedrals-spiral 300 -- --mesh spiral --nwall 300 --dx 12e-6
 
 echo "[geodesic class] the (h, k) chosen for --nwall (nearest 10T+2; ties: class I, smaller k)"
 for c in "4 1 0 12" "27 1 1 32" "37 2 0 42" "300 5 1 312" "500 7 0 492" "912 9 1 912" \

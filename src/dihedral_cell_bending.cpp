@@ -1,0 +1,321 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   dihedral_style cell/bending: the bending energy of a triangulated thin wall, one term per
+   interior edge b-c shared by the wall triangles (a, b, c) and (d, c, b), both outward.
+   Rest angle and stiffness of each edge come from the per-atom reference positions (d2_xref 3)
+   of its four atoms, so the reference shape carries no bending energy (doc/dihedral_cell_bending.md).
+------------------------------------------------------------------------- */
+
+#include "dihedral_cell_bending.h"
+
+#include "atom.h"
+#include "cell_params.h"
+#include "cell_restart.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+static const char *const REFERENCE_NAMES[] = {"xref", "flat"};
+static constexpr int RESTART_VERSION = 1;    // 1: -version, G, t0, reference per type
+
+namespace {
+
+inline double dot(const double *a, const double *b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline void cross(const double *a, const double *b, double *c)
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// the hinge of the triangles (a, b, c) and (d, c, b) about the edge e = x_c - x_b, with
+// u1 = x_a - x_b and u2 = x_d - x_b
+struct Hinge {
+  double n1[3], n2[3];    // e x u1 and u2 x e: outward normals, |n| = twice the triangle area
+  double nn1, nn2;        // |n1|^2, |n2|^2
+  double ee;              // |e|^2
+  double c, s;            // cos and sin of the bend angle theta (> 0 where the wall is convex)
+};
+
+// false if a triangle has zero area
+bool hinge(const double *e, const double *u1, const double *u2, Hinge &h)
+{
+  cross(e, u1, h.n1);
+  cross(u2, e, h.n2);
+  h.nn1 = dot(h.n1, h.n1);
+  h.nn2 = dot(h.n2, h.n2);
+  h.ee = dot(e, e);
+  if (h.nn1 == 0.0 || h.nn2 == 0.0) return false;
+  const double inv = 1.0 / sqrt(h.nn1 * h.nn2);
+  double m[3];
+  cross(h.n1, h.n2, m);
+  // theta = angle from n1 to n2 about e (doc/dihedral_cell_bending.md)
+  h.c = dot(h.n1, h.n2) * inv;
+  h.s = dot(m, e) * inv / sqrt(h.ee);
+  return true;
+}
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+DihedralCellBending::DihedralCellBending(LAMMPS *lmp) :
+    Dihedral(lmp), shear(nullptr), thickness(nullptr), reference(nullptr), kappa(nullptr), ixref(-1)
+{
+  writedata = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+DihedralCellBending::~DihedralCellBending()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(shear);
+    memory->destroy(thickness);
+    memory->destroy(reference);
+    memory->destroy(kappa);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  double **x = atom->x;
+  double **f = atom->f;
+  double **xref = atom->darray[ixref];
+  tagint *tag = atom->tag;
+  int **dihedrallist = neighbor->dihedrallist;
+  const int ndihedrallist = neighbor->ndihedrallist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+
+  for (int n = 0; n < ndihedrallist; n++) {
+    const int i1 = dihedrallist[n][0];
+    const int i2 = dihedrallist[n][1];
+    const int i3 = dihedrallist[n][2];
+    const int i4 = dihedrallist[n][3];
+    const int type = dihedrallist[n][4];
+
+    // current hinge (atoms are the closest images of each other)
+    const double e[3] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1], x[i3][2] - x[i2][2]};
+    const double u1[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
+    const double u2[3] = {x[i4][0] - x[i2][0], x[i4][1] - x[i2][1], x[i4][2] - x[i2][2]};
+    Hinge h;
+    if (!hinge(e, u1, u2, h))
+      error->one(FLERR, "Dihedral cell/bending: a triangle of dihedral {}-{}-{}-{} has zero area",
+                 tag[i1], tag[i2], tag[i3], tag[i4]);
+
+    // reference hinge from xref (minimum image: xref is not unwrapped with the ghosts)
+    double e0[3] = {xref[i3][0] - xref[i2][0], xref[i3][1] - xref[i2][1],
+                    xref[i3][2] - xref[i2][2]};
+    double v1[3] = {xref[i1][0] - xref[i2][0], xref[i1][1] - xref[i2][1],
+                    xref[i1][2] - xref[i2][2]};
+    double v2[3] = {xref[i4][0] - xref[i2][0], xref[i4][1] - xref[i2][1],
+                    xref[i4][2] - xref[i2][2]};
+    domain->minimum_image(e0[0], e0[1], e0[2]);
+    domain->minimum_image(v1[0], v1[1], v1[2]);
+    domain->minimum_image(v2[0], v2[1], v2[2]);
+    Hinge h0;
+    if (!hinge(e0, v1, v2, h0))
+      error->one(FLERR,
+                 "Dihedral cell/bending: a reference (xref) triangle of dihedral {}-{}-{}-{} has "
+                 "zero area",
+                 tag[i1], tag[i2], tag[i3], tag[i4]);
+
+    // k = kappa l0^2 / (A1 + A2), reference edge length and triangle areas (doc/model.md §4.2)
+    const double k = 2.0 * kappa[type] * h0.ee / (sqrt(h0.nn1) + sqrt(h0.nn2));
+    const double c0 = reference[type] == FLAT ? 1.0 : h0.c;
+    const double s0 = reference[type] == FLAT ? 0.0 : h0.s;
+
+    // E = k (1 - cos(theta - theta0)), dE/dtheta = k sin(theta - theta0)
+    const double edihedral = k * (1.0 - h.c * c0 - h.s * s0);
+    const double dedth = k * (h.s * c0 - h.c * s0);
+
+    // dtheta/dx_a = -|e| n1 / |n1|^2, dtheta/dx_d = -|e| n2 / |n2|^2; the edge atoms take
+    // -(1 - s) and -s of them, s the position of a (d) projected on the edge, so that the forces
+    // sum to zero and exert no torque (doc/dihedral_cell_bending.md)
+    const double len = sqrt(h.ee);
+    const double sa = dot(u1, e) / h.ee;
+    const double sd = dot(u2, e) / h.ee;
+    const double ca = dedth * len / h.nn1;
+    const double cd = dedth * len / h.nn2;
+    double f1[3], f2[3], f3[3], f4[3];
+    for (int d = 0; d < 3; d++) {
+      f1[d] = ca * h.n1[d];
+      f4[d] = cd * h.n2[d];
+      f3[d] = -sa * f1[d] - sd * f4[d];
+      f2[d] = -f1[d] - f3[d] - f4[d];
+    }
+
+    if (newton_bond || i1 < nlocal)
+      for (int d = 0; d < 3; d++) f[i1][d] += f1[d];
+    if (newton_bond || i2 < nlocal)
+      for (int d = 0; d < 3; d++) f[i2][d] += f2[d];
+    if (newton_bond || i3 < nlocal)
+      for (int d = 0; d < 3; d++) f[i3][d] += f3[d];
+    if (newton_bond || i4 < nlocal)
+      for (int d = 0; d < 3; d++) f[i4][d] += f4[d];
+
+    if (evflag)
+      ev_tally(i1, i2, i3, i4, nlocal, newton_bond, edihedral, f1, f3, f4, u1[0], u1[1], u1[2],
+               e[0], e[1], e[2], u2[0] - e[0], u2[1] - e[1], u2[2] - e[2]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::allocate()
+{
+  allocated = 1;
+  const int n = atom->ndihedraltypes + 1;
+  memory->create(shear, n, "dihedral:shear");
+  memory->create(thickness, n, "dihedral:thickness");
+  memory->create(reference, n, "dihedral:reference");
+  memory->create(kappa, n, "dihedral:kappa");
+  memory->create(setflag, n, "dihedral:setflag");
+  for (int i = 0; i < n; i++) {
+    setflag[i] = 0;
+    kappa[i] = 0.0;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::settings(int narg, char **arg)
+{
+  if (narg > 0)
+    error->all(FLERR, "Dihedral_style cell/bending takes no arguments, got '{}'", arg[0]);
+}
+
+/* ----------------------------------------------------------------------
+   dihedral_coeff N G t0 [reference xref|flat]
+   dihedral_coeff N file <parameter file> [reference xref|flat]     (keys wall_G, wall_t0)
+------------------------------------------------------------------------- */
+
+void DihedralCellBending::coeff(int narg, char **arg)
+{
+  if (!allocated) allocate();
+  if (narg != 3 && narg != 5)
+    error->all(FLERR,
+               "Incorrect args for dihedral_coeff cell/bending: expected 'dihedral_coeff <type> "
+               "<G> <t0> [reference xref|flat]' or 'dihedral_coeff <type> file <parameter file> "
+               "[reference xref|flat]', got {} args",
+               narg);
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->ndihedraltypes, ilo, ihi, error);
+
+  double g_one, t_one;
+  if (strcmp(arg[1], "file") == 0) {
+    CellParams params(lmp, arg[2], "dihedral_coeff cell/bending");
+    g_one = params.positive("wall_G");
+    t_one = params.positive("wall_t0");
+  } else {
+    g_one = utils::numeric(FLERR, arg[1], false, lmp);
+    t_one = utils::numeric(FLERR, arg[2], false, lmp);
+    if (g_one <= 0.0)
+      error->all(FLERR, "Dihedral_coeff cell/bending: shear modulus G = {} must be > 0", g_one);
+    if (t_one <= 0.0)
+      error->all(FLERR, "Dihedral_coeff cell/bending: wall thickness t0 = {} must be > 0", t_one);
+  }
+  int ref_one = XREF;
+  if (narg == 5) {
+    if (strcmp(arg[3], "reference") != 0)
+      error->all(FLERR, "Dihedral_coeff cell/bending: unknown keyword '{}' (expected 'reference')",
+                 arg[3]);
+    ref_one = parse_reference(arg[4]);
+  }
+
+  for (int i = ilo; i <= ihi; i++) {
+    shear[i] = g_one;
+    thickness[i] = t_one;
+    reference[i] = ref_one;
+    setflag[i] = 1;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int DihedralCellBending::parse_reference(const std::string &name)
+{
+  for (int r : {XREF, FLAT})
+    if (name == REFERENCE_NAMES[r]) return r;
+  error->all(FLERR, "Dihedral_coeff cell/bending: unknown reference '{}' (expected xref or flat)",
+             name);
+  return XREF;
+}
+
+/* ----------------------------------------------------------------------
+   check the reference positions, precompute the bending rigidity per type
+------------------------------------------------------------------------- */
+
+void DihedralCellBending::init_style()
+{
+  int flag, cols;
+  ixref = atom->find_custom("xref", flag, cols);
+  if (ixref < 0 || flag != 1 || cols != 3)
+    error->all(FLERR,
+               "Dihedral style cell/bending needs per-atom reference positions: add "
+               "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
+  // kappa = G t0^3 / 3: thin incompressible shell, E = 3 G, nu = 1/2 (doc/model.md §4.2)
+  for (int i = 1; i <= atom->ndihedraltypes; i++)
+    kappa[i] = shear[i] * thickness[i] * thickness[i] * thickness[i] / 3.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::write_restart(FILE *fp)
+{
+  const double marker = -RESTART_VERSION;
+  fwrite(&marker, sizeof(double), 1, fp);
+  const int n = atom->ndihedraltypes;
+  fwrite(&shear[1], sizeof(double), n, fp);
+  fwrite(&thickness[1], sizeof(double), n, fp);
+  fwrite(&reference[1], sizeof(int), n, fp);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::read_restart(FILE *fp)
+{
+  allocate();
+  const int n = atom->ndihedraltypes;
+  double first = 0.0;
+  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
+  const int version = CellRestart::version(first);
+  CellRestart::refuse_newer(error, FLERR, "Dihedral style cell/bending", version, RESTART_VERSION);
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &shear[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &thickness[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &reference[1], sizeof(int), n, fp, nullptr, error);
+  }
+  MPI_Bcast(&shear[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&thickness[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&reference[1], n, MPI_INT, 0, world);
+  for (int i = 1; i <= n; i++) setflag[i] = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void DihedralCellBending::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ndihedraltypes; i++)
+    fprintf(fp, "%d %.16g %.16g reference %s\n", i, shear[i], thickness[i],
+            REFERENCE_NAMES[reference[i]]);
+}
