@@ -5,11 +5,12 @@
   restart_version.py IN OUT unversioned STYLE...  the STYLE payloads lose their version marker:
                                                the layout written before versions (version 1)
 
-STYLE is cell/sph, cell/wall, cell/neohookean or cell/turgor (unversioned: not cell/sph, whose
-version 1 also lacks the per-pair wall flag). A payload is found by its style name as LAMMPS
+STYLE is cell/sph, cell/wall, cell/neohookean, cell/lamella or cell/turgor (unversioned: not
+cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/lamella, which had versions
+from its start). A payload is found by its style name as LAMMPS
 writes it (int length, name, NUL) followed by the marker -version (src/*.cpp RESTART_VERSION):
-an int for pair cell/sph, a double for pair cell/wall and bond cell/neohookean, a double after
-the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
+an int for pair cell/sph, a double for pair cell/wall and bonds cell/neohookean and cell/lamella,
+a double after the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
 then.
 """
 import struct
@@ -17,6 +18,7 @@ import sys
 
 # style: (bytes between the name and the marker, marker format)
 LAYOUT = {"cell/sph": (0, "=i"), "cell/wall": (0, "=d"), "cell/neohookean": (0, "=d"),
+          "cell/lamella": (0, "=d"),
           "cell/turgor": (4, "=d")}
 
 
@@ -44,7 +46,7 @@ def main():
     src, dst, mode, styles = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
     data = bytearray(open(src, "rb").read())
     for style in styles:
-        if style not in LAYOUT or (mode == "unversioned" and style == "cell/sph"):
+        if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/lamella")):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
