@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    BondCellBase: per-bond reference state for bonds that do not exist in the reference geometry
-   (cell-cell junctions), kept by an internal fix cell/bond/history (doc/model.md §11)
+   (cell-cell junctions), kept by an internal fix cell/bond/history (doc/model.md §4.6)
 ------------------------------------------------------------------------- */
 
 #include "bond_cell_base.h"

@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   BondCellBase: what cellsph bond styles with per-bond reference state share (doc/model.md §11),
+   BondCellBase: what cellsph bond styles with per-bond reference state share (doc/model.md §4.6),
    on the pattern of LAMMPS's BPM bonds: the base class owns the reference-state machinery (an
    internal fix cell/bond/history it creates), each concrete bond style defines its force law.
 ------------------------------------------------------------------------- */

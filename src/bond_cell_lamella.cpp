@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    bond_style cell/lamella: the middle lamella between the walls of two neighbouring cells, a
    linear traction-separation law per unit junction area that breaks for good at its strength
-   (doc/model.md §11). Rest length: the bond's length at its first setup, kept per bond by the
+   (doc/model.md §4.6). Rest length: the bond's length at its first setup, kept per bond by the
    internal fix cell/bond/history (BondCellBase), so it moves between ranks and into restart files.
 ------------------------------------------------------------------------- */
 
@@ -93,14 +93,14 @@ void BondCellLamella::compute(int eflag, int vflag)
     // first setup of this bond: its rest length is its length now
     if (*r0 == FixCellBondHistory::UNSET) set_reference(i1, i2, type, &r);
 
-    // opening delta = r - r0; traction K delta >= sigma_c breaks the bond (doc/model.md §11)
+    // opening delta = r - r0; traction K delta >= sigma_c breaks the bond (doc/model.md §4.6)
     const double delta = r - *r0;
     if (delta >= dcrit[type]) {
       break_bond(n, i1, i2, type);
       continue;
     }
 
-    // F = -K A delta along the bond, U = K A delta^2 / 2 (doc/model.md §11)
+    // F = -K A delta along the bond, U = K A delta^2 / 2 (doc/model.md §4.6)
     double fbond = -kbond[type] * delta / r;
     if (eflag) ebond = 0.5 * kbond[type] * delta * delta;
 

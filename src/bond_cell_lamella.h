@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    bond_style cell/lamella: the middle lamella, a breakable junction between the walls of two
-   neighbouring cells (doc/model.md §11)
+   neighbouring cells (doc/model.md §4.6)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_BOND_CELL_LAMELLA_H

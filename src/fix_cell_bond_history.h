@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   fix cell/bond/history: per-bond reference state of a cellsph bond style (doc/model.md §11),
+   fix cell/bond/history: per-bond reference state of a cellsph bond style (doc/model.md §4.6),
    created by the bond style (BondCellBase). Per atom, ndata values for each of its bond slots,
    aligned with atom->bond_atom[i][k]; they migrate with the atom, and go into restart files;
    a broken bond (type 0) keeps its slot.
