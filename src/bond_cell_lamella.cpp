@@ -169,11 +169,11 @@ void BondCellLamella::coeff(int narg, char **arg)
     a_one = params.positive("lamella_area");
     g_one = params.nonnegative("lamella_gamma");
   } else {
+    if (narg >= 2 && !utils::is_double(arg[1]))
+      error->all(FLERR,
+                 "Bond_coeff cell/lamella: unknown keyword '{}' (expected 'file' or numbers)",
+                 arg[1]);
     if (narg != 5) {
-      for (int i = 1; i < narg; i++)
-        if (!isdigit(arg[i][0]) && arg[i][0] != '-' && arg[i][0] != '+' && arg[i][0] != '.')
-          error->all(FLERR, "Bond_coeff cell/lamella: unknown keyword '{}' (expected 'file')",
-                     arg[i]);
       error->all(FLERR,
                  "Incorrect args for bond_coeff cell/lamella: expected 'bond_coeff <type> <K> "
                  "<sigma_c> <A> <gamma>' or 'bond_coeff <type> file <parameter file>', got {} args",
