@@ -8,14 +8,12 @@
 
 #include "atom.h"
 #include "atom_vec.h"
-#include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "neighbor.h"
 
 #include <algorithm>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -119,8 +117,8 @@ int FixCellBondHistory::slot(int i, tagint j, int type) const
 }
 
 /* ----------------------------------------------------------------------
-   one row per atom of bond_per_atom * ndata values; the row widens (new slots unset) when a later
-   read_data ... add raises bond_per_atom
+   one row per atom of bond_per_atom * ndata values, every slot unset at creation; the row widens
+   (new slots unset) when a later read_data ... add raises bond_per_atom
 ------------------------------------------------------------------------- */
 
 void FixCellBondHistory::grow_arrays(int nmax)
