@@ -31,8 +31,9 @@ BondCellBase::~BondCellBase()
 }
 
 /* ----------------------------------------------------------------------
-   find or create the history fix. Created here (init, after read_restart, before the fixes are
-   initialised), a fix with the ID and style of one in a restart file gets its per-atom values back.
+   find or create the history fix, from coeff() and init_style(). Created after read_restart (at
+   bond_coeff, or at init before the fixes are initialised), a fix with the ID and style of one in
+   the restart file gets its per-atom values back.
 ------------------------------------------------------------------------- */
 
 void BondCellBase::init_history()

@@ -201,6 +201,7 @@ void BondCellLamella::coeff(int narg, char **arg)
     gamma[i] = g_one;
     setflag[i] = 1;
   }
+  init_history();    // from here on f_<history ID> can be used in thermo_style
 }
 
 /* ----------------------------------------------------------------------
