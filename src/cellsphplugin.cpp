@@ -10,10 +10,12 @@
 #include "lmptype.h"
 #include "version.h"
 
+#include "bond_cell_lamella.h"
 #include "bond_cell_neohookean.h"
 #include "compute_cell_props.h"
 #include "compute_cell_shape.h"
 #include "dihedral_cell_bending.h"
+#include "fix_cell_bond_history.h"
 #include "fix_cell_pressure.h"
 #include "fix_cell_turgor.h"
 #include "pair_cell_sph.h"
@@ -54,6 +56,10 @@ const StyleEntry STYLES[] = {
      &create_v1<BondCellNeoHookean>, nullptr},
     {"dihedral", "cell/bending", "bending stiffness of the cell wall across each wall edge",
      &create_v1<DihedralCellBending>, nullptr},
+    {"bond", "cell/lamella", "middle lamella: breakable junction between the walls of two cells",
+     &create_v1<BondCellLamella>, nullptr},
+    {"fix", "cell/bond/history", "per-bond reference state of cellsph bond styles (internal)",
+     nullptr, &create_v2<FixCellBondHistory>},
     {"fix", "cell/pressure", "imposed turgor pressure on closed cell walls", nullptr,
      &create_v2<FixCellPressure>},
     {"fix", "cell/turgor", "water transfer through the cell wall (turgor, osmosis, permeability)",

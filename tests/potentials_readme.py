@@ -100,6 +100,18 @@ QUOTES = [
     (r"equilibrium moisture content at a_w = 0\.3 is X = " + NUM + r" kg/kg, and a_w = 1 is "
      r"reached at\s+X = " + NUM + " kg/kg", "apple",
      [rounded(lambda p: gab(p, 0.3)), rounded(lambda p: gab(p, 1.0))]),
+    (r"The strength\s+sigma_c = " + NUM + r" MPa sits", "apple",
+     [exact(lambda p: p["lamella_sigma"] / 1e6)]),
+    (r"The stiffness K = " + NUM + r" Pa/m is", "apple", [exact(lambda p: p["lamella_K"])]),
+    (r"opens by sigma_c / K = " + NUM + " nm", "apple",
+     [rounded(lambda p: p["lamella_sigma"] / p["lamella_K"] * 1e9)]),
+    (r"A = √3/2 · \((8\.63) µm\)² = " + NUM + " m²", "apple",
+     [exact(lambda p: 8.63), rounded(lambda p: math.sqrt(3) / 2 * 8.63e-6 ** 2)]),
+    (r"A = √3/2 · \(8\.63 µm\)² = " + NUM + " m²", "apple", [exact(lambda p: p["lamella_area"])]),
+    (r"k = K A = " + NUM + " N/m", "apple",
+     [rounded(lambda p: p["lamella_K"] * p["lamella_area"])]),
+    (r"breaks at sigma_c A = " + NUM + " N", "apple",
+     [rounded(lambda p: p["lamella_sigma"] * p["lamella_area"])]),
 ]
 
 

@@ -7,12 +7,12 @@
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
 
-STYLE is cell/sph, cell/wall, cell/neohookean, cell/turgor or cell/bending (unversioned: not
-cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/bending, versioned from the
-start). A payload is found by its style name as LAMMPS
+STYLE is cell/sph, cell/wall, cell/neohookean, cell/lamella, cell/turgor or cell/bending
+(unversioned: not cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/lamella or
+cell/bending, versioned from the start). A payload is found by its style name as LAMMPS
 writes it (int length, name, NUL) followed by the marker -version (src/*.cpp RESTART_VERSION):
-an int for pair cell/sph, a double for pair cell/wall, bond cell/neohookean and dihedral
-cell/bending, a double after
+an int for pair cell/sph, a double for pair cell/wall, bonds cell/neohookean and cell/lamella and
+dihedral cell/bending, a double after
 the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
 then. A fix cell/turgor payload of version 3 (6 values per cell) loses its dry solids (the 6th)
 when made unversioned or older, so that it has the layout of versions 1 and 2 (5 per cell).
@@ -22,6 +22,7 @@ import sys
 
 # style: (bytes between the name and the marker, marker format)
 LAYOUT = {"cell/sph": (0, "=i"), "cell/wall": (0, "=d"), "cell/neohookean": (0, "=d"),
+          "cell/lamella": (0, "=d"),
           "cell/turgor": (4, "=d"), "cell/bending": (0, "=d")}
 
 
@@ -63,7 +64,7 @@ def main():
     src, dst, mode, styles = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
     data = bytearray(open(src, "rb").read())
     for style in styles:
-        if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/bending")) or (
+        if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/lamella", "cell/bending")) or (
                 mode == "older" and style != "cell/turgor"):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
