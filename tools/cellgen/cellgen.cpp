@@ -1,6 +1,7 @@
 // cellgen: writes the initial geometry of cellsph plant cells (fluid-filled spheres bounded by a
 // triangulated wall) as a LAMMPS data file for atom_style angle. See README.md.
 #include "geometry.h"
+#include "tissue.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,7 +29,8 @@ constexpr const char *kUsage =
     "               [--margin F=0.5] --out FILE.data\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
-    "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
+    "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n"
+    "A packed tissue of polyhedral cells: cellgen tissue --help.\n";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -370,6 +372,7 @@ void run(const Options &o, const std::string &args)
 
 int main(int argc, char **argv)
 {
+  if (argc > 1 && std::string(argv[1]) == "tissue") return cellgen::tissueMain(argc - 1, argv + 1);
   const std::vector<std::string> words(argv + 1, argv + argc);
   if (std::find(words.begin(), words.end(), "--help") != words.end() ||
       std::find(words.begin(), words.end(), "-h") != words.end()) {
