@@ -31,6 +31,7 @@ namespace {
   constexpr double kPi = 3.14159265358979323846;
   constexpr int kSmoothing = 10;           // spring relaxation passes of each wall mesh
   constexpr int kLloydSteps = 1000;        // at most this many Lloyd steps towards the CV
+  constexpr int kCorrections = 4;          // remeshings to bring the mesh to the porosity
   constexpr double kMaxRounding = 0.95;    // rounding radius at most this share of the inradius
 
   constexpr const char *kUsage =
@@ -403,6 +404,7 @@ namespace {
     const Vec3 len = s.box.length();
     JunctionSet out;
     std::map<std::array<int, 5>, int> bondsOf;
+    std::map<std::array<int, 5>, double> areaOf;
     for (size_t i = 0; i < cells.size(); ++i)
       for (size_t f = 0; f < cells[i].faces.size(); ++f) {
         const VoronoiFace &face = cells[i].faces[f];
@@ -410,14 +412,15 @@ namespace {
         const int j = face.neighbour;
         const int g = matchingFace(cells[j], static_cast<int>(i), face.image);
         const Vec3 shift = shiftOf(face.image, len);
+        Junction jn{static_cast<int>(i), j, face.image, 0.0};
+        out.faces.push_back(jn);
+        // each pair of faces is measured and bonded once, from the side that owns its key
+        const auto [k, first] = faceKey(jn);
+        if (!first) continue;
         std::vector<Vec3> other = rc[j].facet(g);
         for (Vec3 &x : other) x += shift;
-        const double area = overlapArea(rc[i].facet(static_cast<int>(f)), other, face.normal);
-        if (area <= 0) continue;
-        Junction jn{static_cast<int>(i), j, face.image, area};
-        // each pair of faces is bonded once, from the side that owns the canonical key
-        const auto [k, first] = faceKey(jn);
-        if (first) {
+        areaOf[k] = overlapArea(rc[i].facet(static_cast<int>(f)), other, face.normal);
+        if (areaOf[k] > 0) {
           const std::vector<int> pa = facetParticles(meshes[i], face, eps, tol);
           const std::vector<int> pb = facetParticles(meshes[j], cells[j].faces[g], eps, tol);
           std::vector<Vec3> xa, xb;
@@ -428,13 +431,17 @@ namespace {
             out.bonds.push_back({wallOffset[i] + pa[pq[0]], wallOffset[j] + pb[pq[1]]});
           bondsOf[k] = static_cast<int>(pairs.size());
         }
-        out.faces.push_back(jn);
       }
+    // both sides of a face get the owner's area and bond count; faces without contact are dropped
+    std::vector<Junction> kept;
     for (Junction &jn : out.faces) {
       const auto k = faceKey(jn).first;
+      jn.area = areaOf.at(k);
       const auto it = bondsOf.find(k);
       jn.bonds = it == bondsOf.end() ? 0 : it->second;
+      if (jn.area > 0) kept.push_back(jn);
     }
+    out.faces.swap(kept);
     return out;
   }
 
@@ -474,7 +481,7 @@ namespace {
       throw UsageError("cells too small for the resolution: the smallest cell (cell " +
                        std::to_string(small - balls.begin() + 1) + ", inscribed radius " +
                        show(small->radius) + " m) leaves " + show(inner) + " m inside its wall; " +
-                       "--size " + show(o.size) + " needs --dx <= " + show(0.5 * small->radius) +
+                       "--size " + show(o.size) + " needs --dx <= " + show(0.5 * inner) +
                        " (--dx is " + show(s.dx) + ", --junction-gap " + show(s.junctionGap) + ")");
   }
 
@@ -785,15 +792,22 @@ namespace {
     b.alpha = solveRounding(b.voronoi, balls, eps, o.porosity, boxVolume, o.porosity);
     b.rounded = roundCells(b.voronoi, balls, eps, b.alpha);
     b.meshes = meshCells(b.rounded, s.wallDx, eps, b.units);
-    // one correction for the mesh: aim the exact bodies off by the mesh's own porosity error
-    const double exact0 = exactPorosity(b.voronoi, balls, eps, b.alpha, boxVolume);
-    const double offset = meshPorosity(b.meshes, boxVolume, true) - exact0;
-    if (b.alpha > 0) {
-      b.alpha = solveRounding(b.voronoi, balls, eps, o.porosity - offset, boxVolume, o.porosity);
+    // the mesh's porosity differs from the exact bodies': aim the exact bodies off by that
+    // difference, a few times (fixed-point iteration on the target)
+    double aim = o.porosity;
+    for (int it = 0; it < kCorrections && b.alpha > 0; ++it) {
+      const double error = meshPorosity(b.meshes, boxVolume, true) - o.porosity;
+      if (std::abs(error) < 1e-4) break;
+      aim -= error;
+      b.alpha = solveRounding(b.voronoi, balls, eps, aim, boxVolume, o.porosity);
       b.rounded = roundCells(b.voronoi, balls, eps, b.alpha);
       b.meshes = meshCells(b.rounded, s.wallDx, eps, b.units);
     }
     b.exact = exactPorosity(b.voronoi, balls, eps, b.alpha, boxVolume);
+    if (b.alpha == 0 && meshPorosity(b.meshes, boxVolume, true) > o.porosity)
+      std::cerr << "cellgen tissue: note: --porosity " << o.porosity << " is below the lowest "
+                << "this junction gap and wall mesh give, "
+                << meshPorosity(b.meshes, boxVolume, true) << " (unrounded cells)\n";
     for (size_t i = 0; i < b.voronoi.size(); ++i) {
       const std::vector<Vec3> fluid =
           fluidInWall(b.rounded[i], b.meshes[i].wall, b.meshes[i].unit->triangles, s.dx, s.gap);
