@@ -308,6 +308,10 @@ def check_junctions(t, rows, periodic):
         if abs(twin[0] / area - 1) > 1e-9 or twin[1] != nbonds:
             fail("junction %d-%d: area/bonds %g/%d, from the other side %g/%d"
                  % (i, j, area, nbonds, twin[0], twin[1]))
+    # across periodic faces too: a 2 x 2 x 2 block has faces with every periodic image axis
+    for k in range(3):
+        if periodic[k] and not any(img[k] != 0 for (_, _, img) in faces):
+            fail("no junction across the periodic faces normal to axis %d" % k)
     junction_bonds = [(a, b) for ty, a, b in d["bonds"] if ty == 2]
     if sum(nb for nb in (v[1] for v in faces.values())) != 2 * len(junction_bonds):
         fail("junction bond counts in .junctions do not add up to the type-2 bonds")
@@ -317,13 +321,21 @@ def check_junctions(t, rows, periodic):
         if ma == mb or d["type"][a] != 2 or d["type"][b] != 2:
             fail("junction bond %d-%d not between wall atoms of two cells" % (a, b))
             continue
-        # the bond must cross a face the .junctions file names, at the image it names
-        best = math.inf
+        # the bond must cross a face the .junctions file names, at the image it names, and join
+        # a to the nearest wall particle of the other cell there (cellgen pairs mutual nearest)
+        best, shift = math.inf, None
         for (i, j, img), _ in faces.items():
             if (i, j) == (ma, mb):
-                shift = tuple(img[k] * t.L[k] for k in range(3))
-                best = min(best, norm(sub(add(x[b], shift), x[a])))
+                s = tuple(img[k] * t.L[k] for k in range(3))
+                if norm(sub(add(x[b], s), x[a])) < best:
+                    best, shift = norm(sub(add(x[b], s), x[a])), s
         lengths.append(best)
+        if shift is not None:
+            nearest = min(norm(sub(add(x[c], shift), x[a])) for c in t.wall[mb])
+            if nearest < best * (1 - 1e-12):
+                fail("junction bond %d-%d: %g long, but atom %d has a wall particle of cell %d "
+                     "at %g" % (a, b, best, a, mb, nearest))
+                break
     if lengths:
         print("  %d junction bonds, length %.4g..%.4g m" % (len(lengths), min(lengths), max(lengths)))
         # pairs are taken within gap + wall spacing (= 2 gap with the default gap)

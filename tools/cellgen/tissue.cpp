@@ -363,25 +363,29 @@ namespace {
     return Vec3(image[0] * len[0], image[1] * len[1], image[2] * len[2]);
   }
 
-  // Mutual nearest facet particles of the two facing walls within gap + wall spacing.
-  std::vector<std::array<int, 2>> pairFacets(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
+  int nearest(const Vec3 &x, const std::vector<Vec3> &set)
+  {
+    int best = -1;
+    double d = INFINITY;
+    for (size_t k = 0; k < set.size(); ++k)
+      if ((set[k] - x).squaredNorm() < d) {
+        d = (set[k] - x).squaredNorm();
+        best = static_cast<int>(k);
+      }
+    return best;
+  }
+
+  // Junction pairs (index in wall a, index in wall b) across one face: each particle of a's facet
+  // with its nearest particle of wall b, when that one's nearest on wall a is it again (mutual
+  // nearest neighbours) and they are at most `cutoff` apart.
+  std::vector<std::array<int, 2>> pairFacets(const std::vector<int> &facet,
+                                             const std::vector<Vec3> &a, const std::vector<Vec3> &b,
                                              double cutoff)
   {
-    auto nearest = [](const Vec3 &x, const std::vector<Vec3> &set) {
-      int best = -1;
-      double d = INFINITY;
-      for (size_t k = 0; k < set.size(); ++k)
-        if ((set[k] - x).squaredNorm() < d) {
-          d = (set[k] - x).squaredNorm();
-          best = static_cast<int>(k);
-        }
-      return best;
-    };
     std::vector<std::array<int, 2>> out;
-    for (size_t p = 0; p < a.size(); ++p) {
+    for (int p : facet) {
       const int q = nearest(a[p], b);
-      if (q >= 0 && nearest(b[q], a) == static_cast<int>(p) && (a[p] - b[q]).norm() <= cutoff)
-        out.push_back({static_cast<int>(p), q});
+      if (nearest(b[q], a) == p && (a[p] - b[q]).norm() <= cutoff) out.push_back({p, q});
     }
     return out;
   }
@@ -421,14 +425,12 @@ namespace {
         for (Vec3 &x : other) x += shift;
         areaOf[k] = overlapArea(rc[i].facet(static_cast<int>(f)), other, face.normal);
         if (areaOf[k] > 0) {
-          const std::vector<int> pa = facetParticles(meshes[i], face, eps, tol);
-          const std::vector<int> pb = facetParticles(meshes[j], cells[j].faces[g], eps, tol);
-          std::vector<Vec3> xa, xb;
-          for (int p : pa) xa.push_back(meshes[i].wall[p]);
-          for (int p : pb) xb.push_back(meshes[j].wall[p] + shift);
-          const auto pairs = pairFacets(xa, xb, s.junctionGap + s.wallDx);
+          std::vector<Vec3> wallJ = meshes[j].wall;
+          for (Vec3 &x : wallJ) x += shift;
+          const auto pairs = pairFacets(facetParticles(meshes[i], face, eps, tol), meshes[i].wall,
+                                        wallJ, s.junctionGap + s.wallDx);
           for (const auto &pq : pairs)
-            out.bonds.push_back({wallOffset[i] + pa[pq[0]], wallOffset[j] + pb[pq[1]]});
+            out.bonds.push_back({wallOffset[i] + pq[0], wallOffset[j] + pq[1]});
           bondsOf[k] = static_cast<int>(pairs.size());
         }
       }
