@@ -390,14 +390,15 @@ namespace {
     return out;
   }
 
-  // The face between cells i and j (image of j) and its twin share one key, (lower cell, higher
+  // The face between cells i != j (image of j) and its twin share one key, (lower cell, higher
   // cell, image seen from the lower); `second` says whether this side is the one that owns it.
   std::pair<std::array<int, 5>, bool> faceKey(const Junction &jn)
   {
-    const std::array<int, 3> minus{-jn.image[0], -jn.image[1], -jn.image[2]};
-    const bool own = jn.i < jn.j || (jn.i == jn.j && jn.image > minus);
-    const std::array<int, 3> &im = own ? jn.image : minus;
-    return {{std::min(jn.i, jn.j), std::max(jn.i, jn.j), im[0], im[1], im[2]}, own};
+    const bool own = jn.i < jn.j;
+    const int sign = own ? 1 : -1;
+    return {{std::min(jn.i, jn.j), std::max(jn.i, jn.j), sign * jn.image[0], sign * jn.image[1],
+             sign * jn.image[2]},
+            own};
   }
 
   JunctionSet junctions(const std::vector<VoronoiCell> &cells, const std::vector<RoundedCell> &rc,
@@ -412,7 +413,8 @@ namespace {
     for (size_t i = 0; i < cells.size(); ++i)
       for (size_t f = 0; f < cells[i].faces.size(); ++f) {
         const VoronoiFace &face = cells[i].faces[f];
-        if (face.neighbour < 0) continue;
+        // a junction joins two cells: none on free faces or on a face with the cell's own image
+        if (face.neighbour < 0 || face.neighbour == static_cast<int>(i)) continue;
         const int j = face.neighbour;
         const int g = matchingFace(cells[j], static_cast<int>(i), face.image);
         const Vec3 shift = shiftOf(face.image, len);
@@ -646,11 +648,15 @@ namespace {
            "1 - sum V_wall_mesh / V_box (includes the junction gaps)");
     st.add("rounding_alpha", fmt("%.4f", b.alpha), "rho_i = eps + alpha (inradius_i - eps)");
     std::vector<double> nbVor, nbJunc, volVor, volCell, deq;
+    int selfFaces = 0;
     std::vector<int> juncCount(b.voronoi.size(), 0);
     for (const Junction &j : b.tissue.junctions.faces) ++juncCount[j.i];
     for (size_t i = 0; i < b.voronoi.size(); ++i) {
       int nb = 0;
-      for (const VoronoiFace &f : b.voronoi[i].faces) nb += f.neighbour >= 0;
+      for (const VoronoiFace &f : b.voronoi[i].faces) {
+        nb += f.neighbour >= 0;
+        selfFaces += f.neighbour == static_cast<int>(i);
+      }
       nbVor.push_back(nb);
       nbJunc.push_back(juncCount[i]);
       volVor.push_back(b.voronoi[i].volume);
@@ -663,6 +669,8 @@ namespace {
            "mean (range) faces shared with another cell");
     st.add("neighbours_junction", fmt("%.2f (%g..%g)", sj.mean, sj.min, sj.max),
            "mean (range) faces with a contact area > 0");
+    st.add("self_image_faces", std::to_string(selfFaces),
+           "faces of a cell with its own periodic image (no junction there)");
     st.add("volume_cv_voronoi", fmt("%.4f", vv.cv),
            "requested " + show(o.cv) + " after " + std::to_string(b.lloydSteps) + " Lloyd steps");
     st.add("volume_cv_cells", fmt("%.4f", vc.cv));
