@@ -29,7 +29,7 @@ namespace {
 
   constexpr const char *kVersion = "cellgen 1.0 tissue";
   constexpr double kPi = 3.14159265358979323846;
-  constexpr int kSmoothing = 10;           // spring relaxation passes of each wall mesh
+  constexpr int kSmoothing = 30;           // spring relaxation passes of each wall mesh
   constexpr int kLloydSteps = 1000;        // at most this many Lloyd steps towards the CV
   constexpr int kCorrections = 4;          // remeshings to bring the mesh to the porosity
   constexpr double kMaxRounding = 0.95;    // rounding radius at most this share of the inradius

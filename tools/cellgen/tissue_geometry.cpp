@@ -17,6 +17,7 @@ namespace cellgen {
 namespace {
 
   constexpr double kPi = 3.14159265358979323846;
+  constexpr double kStep = 1.0 / 3.0;    // spring relaxation step (stable for six bonds)
 
   Vec3 at(const std::vector<double> &v, size_t i)
   {
@@ -434,6 +435,22 @@ namespace {
       if ((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).dot(x[t[0]] - c) <= 0) return true;
     return false;
   }
+
+  // Puts back the old positions of every triangle that is folded in `next`, until none is.
+  void keepUnfolded(std::vector<Vec3> &next, const std::vector<Vec3> &old,
+                    const std::vector<Tri> &tri, const Vec3 &c)
+  {
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (const Tri &t : tri)
+        if ((next[t[1]] - next[t[0]]).cross(next[t[2]] - next[t[0]]).dot(next[t[0]] - c) <= 0)
+          for (int v : t)
+            if (next[v] != old[v]) {
+              next[v] = old[v];
+              changed = true;
+            }
+    }
+  }
 }    // namespace
 
 std::vector<Vec3> wallOnCell(const Surface &unit, const RoundedCell &cell, int iterations)
@@ -454,14 +471,14 @@ std::vector<Vec3> wallOnCell(const Surface &unit, const RoundedCell &cell, int i
       Vec3 push = Vec3::Zero();
       for (int j : nb[i]) {
         const Vec3 d = x[j] - x[i];
-        // linear springs of rest length the mean edge (a third of a step, stable for 6 bonds)
-        push += (1.0 - mean / d.norm()) * d / 3.0;
+        // tension-only linear springs of rest length the mean edge pull the sparse parts together
+        push += std::max(0.0, 1.0 - mean / d.norm()) * d * kStep;
       }
       const Vec3 u = (x[i] + push - c).normalized();
       next[i] = c + cell.rayExit(u) * u;
     }
-    // a step that would fold a triangle (seen from the centre) ends the smoothing
-    if (folded(next, unit.triangles, c)) break;
+    // points of a triangle that the step would fold (seen from the centre) stay where they were
+    keepUnfolded(next, x, unit.triangles, c);
     x.swap(next);
   }
   // the radial map keeps every triangle outward: det(a - c, b - c, e - c) scales by positive radii

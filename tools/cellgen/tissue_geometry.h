@@ -108,8 +108,8 @@ MeshMeasure meshMeasure(const std::vector<Vec3> &x, const std::vector<Tri> &tri,
                         const std::vector<Edge> &edges, double t);
 
 // Maps the unit sphere mesh radially from the centre onto the wall surface, then relaxes it
-// `iterations` times (linear springs of the mean edge length along the mesh edges, each point
-// projected back radially); a step that would fold a triangle ends the relaxation.
+// `iterations` times (tension-only springs of the mean edge length along the mesh edges, each point
+// projected back radially); points of a triangle a step would fold keep their old positions.
 std::vector<Vec3> wallOnCell(const Surface &unit, const RoundedCell &cell, int iterations);
 
 // Fluid lattice points (spacing dx, centred on the cell's centre) at least `gap` inside the wall
