@@ -16,7 +16,6 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -493,13 +492,11 @@ namespace {
 
   struct Summary {
     double mean = 0, min = INFINITY, max = -INFINITY, cv = 0;
-    size_t n = 0;
   };
 
   Summary summarise(const std::vector<double> &v)
   {
     Summary s;
-    s.n = v.size();
     if (v.empty()) return s;
     for (double x : v) {
       s.mean += x / v.size();

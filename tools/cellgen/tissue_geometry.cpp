@@ -151,7 +151,6 @@ namespace {
       if (fs.size() != 2) throw std::runtime_error("shrunk cell is not a closed polytope");
       const double psi = std::acos(std::clamp(q.normals[fs[0]].dot(q.normals[fs[1]]), -1.0, 1.0));
       q.edges.push_back(e);
-      q.edgeAngle.push_back(psi);
       // Steiner: the edge's wedge adds t^2 L psi / 2 to the parallel volume
       q.meanCurvature += 0.5 * (q.vertices[e[0]] - q.vertices[e[1]]).norm() * psi;
     }
@@ -200,7 +199,6 @@ std::vector<VoronoiCell> tessellate(const std::vector<Vec3> &seeds, const Box &b
         VoronoiFace f;
         for (int v : loops[k]) f.polygon.push_back(x[v]);
         const Vec3 nn = newellNormal(f.polygon);
-        f.area = 0.5 * nn.norm();
         f.normal = nn.normalized();
         f.offset = f.normal.dot(f.polygon[0] - cell.seed);
         f.neighbour = nb[k] >= 0 ? nb[k] : -1;

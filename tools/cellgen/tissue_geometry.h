@@ -17,7 +17,6 @@ struct VoronoiFace {
   Vec3 normal;
   double offset = 0;
   std::vector<Vec3> polygon;
-  double area = 0;
   int neighbour = -1;                   // 0-based cell index, -1 for a free (box) face
   std::array<int, 3> image{0, 0, 0};    // the neighbour across it is its seed + image * box length
 };
@@ -55,7 +54,6 @@ struct Polytope {
   std::vector<Vec3> normals;
   std::vector<int> faceId;
   std::vector<Edge> edges;
-  std::vector<double> edgeAngle;    // exterior dihedral angle (between the two face normals)
   double volume = 0, area = 0;
   double meanCurvature = 0;    // M = sum over edges of length * exterior angle / 2
 };
@@ -76,7 +74,6 @@ class RoundedCell {
 
   const Vec3 &centre() const { return centre_; }
   double rounding() const { return r_; }
-  const Polytope &core() const { return core_; }
 
   // Steiner's formula for a convex body Q + ball(t): V = V_Q + t S_Q + t^2 M_Q + 4/3 pi t^3.
   double parallelVolume(double t) const;
