@@ -2,6 +2,7 @@
 // triangulated wall) as a LAMMPS data file for atom_style angle (molecular with --dihedrals).
 // See README.md.
 #include "geometry.h"
+#include "tissue.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,7 +39,8 @@ constexpr const char *kUsage =
     "spheroids).\n"
     "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
     "            dihedral_style cell/bending.\n"
-    "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n";
+    "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n"
+    "A packed tissue of polyhedral cells: cellgen tissue --help.\n";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -488,6 +490,7 @@ void run(const Options &o, const std::string &args)
 
 int main(int argc, char **argv)
 {
+  if (argc > 1 && std::string(argv[1]) == "tissue") return cellgen::tissueMain(argc - 1, argv + 1);
   const std::vector<std::string> words(argv + 1, argv + argc);
   if (std::find(words.begin(), words.end(), "--help") != words.end() ||
       std::find(words.begin(), words.end(), "-h") != words.end()) {

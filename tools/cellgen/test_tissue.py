@@ -1,0 +1,408 @@
+#!/usr/bin/env python3
+"""Checks `cellgen tissue` (tools/cellgen/README.md, "Tissue mode") from the files it writes.
+
+usage: test_tissue.py path/to/cellgen
+
+Generates coarse 2 x 2 x 2 tissues (periodic at porosity 0, 0.15, 0.3; a slab in z) and checks,
+recomputing everything from the data file: every wall closed (each edge in exactly two triangles,
+never twice in one direction, V - E + F = 2, wall bonds = triangle edges) and outward (signed
+volume > 0, every triangle outward seen from the cell's fluid); fluid inside its own wall (winding
+number) and at least the gap from it; walls of different cells at least the junction gap apart
+(minimum image); the porosity 1 - sum V_cell / V_box (V_cell inside the outer surface, half the
+junction gap outside the wall mesh, Steiner's formula) within 0.005 of the request (at 0: at most
+0.03, the sharp edges cut by the mesh); masses and aref as documented; junction bonds only between
+wall atoms of different cells, each across a face of the .junctions file with the image it names;
+contact areas positive and equal from both sides, bond counts matching; the slab without junctions
+through its free faces; the same file for the same seed; and bad inputs refused with the option and
+value named. Exits non-zero on any failure.
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+FAILS = []
+
+
+def fail(msg):
+    FAILS.append(msg)
+    print("  FAIL:", msg)
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def norm(a):
+    return math.sqrt(dot(a, a))
+
+
+def read_data(path):
+    d = {"x": {}, "mol": {}, "type": {}, "bonds": [], "tri": [], "cellatoms": {}, "box": []}
+    section = None
+    with open(path) as f:
+        d["header"] = f.readline()
+        for line in f:
+            w = line.split()
+            if not w:
+                continue
+            if w[0] in ("Masses", "Atoms", "Bonds", "Angles", "CellAtoms"):
+                section = w[0]
+                continue
+            if section is None:
+                if len(w) == 4 and w[2].endswith("lo"):
+                    d["box"].append((float(w[0]), float(w[1])))
+                elif len(w) >= 2 and w[1] in ("atoms", "bonds", "angles"):
+                    d["n" + w[1]] = int(w[0])
+                elif len(w) == 3 and w[2] == "types":
+                    d[w[1] + "_types"] = int(w[0])
+            elif section == "Atoms":
+                i = int(w[0])
+                d["mol"][i], d["type"][i] = int(w[1]), int(w[2])
+                d["x"][i] = tuple(map(float, w[3:6]))
+            elif section == "Bonds":
+                d["bonds"].append((int(w[1]), int(w[2]), int(w[3])))
+            elif section == "Angles":
+                d["tri"].append((int(w[2]), int(w[3]), int(w[4])))
+            elif section == "CellAtoms":
+                d["cellatoms"][int(w[0])] = tuple(map(float, w[1:6]))
+    for key in ("DX", "gap", "junction_gap"):
+        d[key] = float(d["header"].split(key + "=")[1].split()[0])
+    return d
+
+
+def read_junctions(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            w = line.split()
+            rows.append((int(w[0]), int(w[1]), tuple(map(int, w[2:5])), float(w[5]), int(w[6])))
+    return rows
+
+
+def read_stats(path):
+    s = {}
+    with open(path) as f:
+        for line in f:
+            k, v = line.split("=", 1)
+            s[k.strip()] = v.split("#")[0].strip()
+    return s
+
+
+def solid_angle(p, a, b, c):
+    # Van Oosterom-Strackee: the solid angle of triangle abc seen from p
+    ra, rb, rc = sub(a, p), sub(b, p), sub(c, p)
+    la, lb, lc = norm(ra), norm(rb), norm(rc)
+    num = dot(ra, cross(rb, rc))
+    den = la * lb * lc + dot(ra, rb) * lc + dot(ra, rc) * lb + dot(rb, rc) * la
+    return 2.0 * math.atan2(num, den)
+
+
+def seg_dist(p, a, b):
+    d = sub(b, a)
+    t = max(0.0, min(1.0, dot(sub(p, a), d) / dot(d, d)))
+    return norm(sub(p, add(a, (t * d[0], t * d[1], t * d[2]))))
+
+
+def tri_dist(p, a, b, c):
+    n = cross(sub(b, a), sub(c, a))
+    h = dot(sub(p, a), n) / dot(n, n)
+    q = sub(p, (h * n[0], h * n[1], h * n[2]))
+    if (dot(cross(sub(b, a), sub(q, a)), n) >= 0 and dot(cross(sub(c, b), sub(q, b)), n) >= 0
+            and dot(cross(sub(a, c), sub(q, c)), n) >= 0):
+        return abs(h) * norm(n)
+    return min(seg_dist(p, a, b), seg_dist(p, b, c), seg_dist(p, c, a))
+
+
+class Tissue:
+    def __init__(self, d):
+        self.d = d
+        self.L = [hi - lo for lo, hi in d["box"]]
+        self.cells = sorted(set(d["mol"].values()))
+        self.wall = {m: [] for m in self.cells}
+        self.fluid = {m: [] for m in self.cells}
+        for i, m in d["mol"].items():
+            (self.wall if d["type"][i] == 2 else self.fluid)[m].append(i)
+        self.tri = {m: [] for m in self.cells}
+        for t in d["tri"]:
+            self.tri[d["mol"][t[0]]].append(t)
+
+    def centre(self, m):
+        pts = [self.d["x"][i] for i in (self.fluid[m] or self.wall[m])]
+        return tuple(sum(p[k] for p in pts) / len(pts) for k in range(3))
+
+    def min_image(self, v, periodic):
+        return tuple(v[k] - self.L[k] * round(v[k] / self.L[k]) if periodic[k] else v[k]
+                     for k in range(3))
+
+
+def check_walls(t):
+    d = t.d
+    x = d["x"]
+    tri_edges, directed = {}, set()
+    for a, b, c in d["tri"]:
+        for p, q in ((a, b), (b, c), (c, a)):
+            if (p, q) in directed:
+                fail("edge %d-%d twice in one direction" % (p, q))
+                return
+            directed.add((p, q))
+            k = (min(p, q), max(p, q))
+            tri_edges[k] = tri_edges.get(k, 0) + 1
+    if any(n != 2 for n in tri_edges.values()):
+        fail("a triangle edge is not in exactly two triangles")
+    wall_bonds = {(min(a, b), max(a, b)) for ty, a, b in d["bonds"] if ty == 1}
+    if wall_bonds != set(tri_edges):
+        fail("wall bonds (type 1) differ from the triangle edges")
+    for m in t.cells:
+        nv, nf = len(t.wall[m]), len(t.tri[m])
+        ne = sum(1 for a, b in wall_bonds if d["mol"][a] == m)
+        if nv - ne + nf != 2:
+            fail("cell %d: V - E + F = %d" % (m, nv - ne + nf))
+        c = t.centre(m)
+        vol = 0.0
+        for a, b, e in t.tri[m]:
+            ra, rb, re = sub(x[a], c), sub(x[b], c), sub(x[e], c)
+            vol += dot(ra, cross(rb, re)) / 6
+            if dot(cross(sub(rb, ra), sub(re, ra)), ra) <= 0:
+                fail("cell %d: triangle %d %d %d not outward seen from its fluid" % (m, a, b, e))
+                break
+        if vol <= 0:
+            fail("cell %d: signed volume %g <= 0" % (m, vol))
+
+
+def mesh_measure(t, m, eps):
+    """Volume, area and the outer parallel volume at eps (Steiner on the mesh) of cell m's wall."""
+    x = t.d["x"]
+    c = t.centre(m)
+    vol = area = wedge = 0.0
+    edge_tris = {}
+    normal = {}
+    for k, (a, b, e) in enumerate(t.tri[m]):
+        ra, rb, re = sub(x[a], c), sub(x[b], c), sub(x[e], c)
+        vol += dot(ra, cross(rb, re)) / 6
+        n = cross(sub(rb, ra), sub(re, ra))
+        area += 0.5 * norm(n)
+        normal[k] = tuple(v / norm(n) for v in n)
+        for p, q in ((a, b), (b, e), (e, a)):
+            edge_tris.setdefault((min(p, q), max(p, q)), []).append(k)
+    for (p, q), (k1, k2) in edge_tris.items():
+        n1, n2 = normal[k1], normal[k2]
+        far = [v for v in t.tri[m][k2] if v not in (p, q)][0]
+        sign = 1.0 if dot(sub(x[far], x[t.tri[m][k1][0]]), n1) <= 0 else -1.0
+        psi = math.acos(max(-1.0, min(1.0, dot(n1, n2))))
+        wedge += 0.5 * norm(sub(x[p], x[q])) * psi * sign
+    parallel = vol + eps * area + eps * eps * wedge + 4 / 3 * math.pi * eps ** 3
+    return vol, area, parallel
+
+
+def check_porosity(t, requested, tol, periodic):
+    eps = 0.5 * t.d["junction_gap"]
+    box = 1.0
+    for k in range(3):
+        lo, hi = t.d["box"][k]
+        box *= (hi - lo) if periodic[k] else (hi - lo - 2 * t.margin)
+    total = sum(mesh_measure(t, m, eps)[2] for m in t.cells)
+    phi = 1 - total / box
+    ok = abs(phi - requested) <= tol if requested > 0 else phi <= tol
+    print("  porosity requested %.3f, measured %.4f" % (requested, phi))
+    if not ok:
+        fail("porosity %.4f vs requested %.3f (tolerance %g)" % (phi, requested, tol))
+    return phi
+
+
+def check_masses(t, rho0=1000.0):
+    d = t.d
+    for m in t.cells:
+        vol, area, _ = mesh_measure(t, m, 0)
+        mf = [d["cellatoms"][i][0] for i in t.fluid[m]]
+        if abs(sum(mf) / (rho0 * vol) - 1) > 1e-6:
+            fail("cell %d: fluid mass %g != rho0 V_wall %g" % (m, sum(mf), rho0 * vol))
+        mw = [d["cellatoms"][i][0] for i in t.wall[m]]
+        if abs(sum(mw) / (rho0 * area * 1e-6) - 1) > 1e-6:
+            fail("cell %d: wall mass %g != rho0 A 1 um" % (m, sum(mw)))
+        aref = sum(d["cellatoms"][a][4] + d["cellatoms"][b][4]
+                   for ty, a, b in d["bonds"] if ty == 1 and d["mol"][a] == m)
+        if abs(aref / area - 1) > 1e-6:
+            fail("cell %d: sum of bond areas %g != wall area %g" % (m, aref, area))
+    for i, row in d["cellatoms"].items():
+        if row[1:4] != d["x"][i]:
+            fail("xref of atom %d differs from its position" % i)
+            break
+
+
+def check_fluid(t):
+    d, x = t.d, t.d["x"]
+    gap = d["gap"]
+    for m in t.cells:
+        tris = [(x[a], x[b], x[e]) for a, b, e in t.tri[m]]
+        for i in t.fluid[m]:
+            p = x[i]
+            w = sum(solid_angle(p, *tr) for tr in tris) / (4 * math.pi)
+            if abs(w - 1) > 1e-6:
+                fail("fluid atom %d not inside its own wall (winding %g)" % (i, w))
+                return
+            near = min(tri_dist(p, *tr) for tr in tris
+                       if min(norm(sub(p, v)) for v in tr) < gap + 3 * d["DX"])
+            if near < gap * (1 - 1e-9):
+                fail("fluid atom %d only %g from its wall (gap %g)" % (i, near, gap))
+                return
+
+
+def check_wall_gap(t, periodic):
+    d, x = t.d, t.d["x"]
+    g = d["junction_gap"]
+    walls = [(i, d["mol"][i]) for i in d["x"] if d["type"][i] == 2]
+    cell = 2.0 * g
+    bins = {}
+    for i, m in walls:
+        key = tuple(int(math.floor(x[i][k] / cell)) for k in range(3))
+        bins.setdefault(key, []).append((i, m))
+    nb = [int(math.floor(t.L[k] / cell)) for k in range(3)]
+    closest = math.inf
+    for key, members in bins.items():
+        for off in [(a, b, c) for a in (-1, 0, 1) for b in (-1, 0, 1) for c in (-1, 0, 1)]:
+            other = tuple((key[k] + off[k]) % nb[k] if periodic[k] else key[k] + off[k]
+                          for k in range(3))
+            for i, m in members:
+                for j, n in bins.get(other, []):
+                    if m != n:
+                        closest = min(closest, norm(t.min_image(sub(x[i], x[j]), periodic)))
+    print("  closest wall particles of different cells: %.4g m (junction gap %.4g)" % (closest, g))
+    if closest < g * (1 - 1e-9):
+        fail("walls of different cells %g apart, below the junction gap %g" % (closest, g))
+
+
+def check_junctions(t, rows, periodic):
+    d, x = t.d, t.d["x"]
+    g = d["junction_gap"]
+    faces = {}
+    for i, j, img, area, nbonds in rows:
+        if area <= 0:
+            fail("junction %d-%d has area %g <= 0" % (i, j, area))
+        if i == j:
+            fail("junction of cell %d with itself (image %s)" % (i, img))
+        for k in range(3):
+            if img[k] != 0 and not periodic[k]:
+                fail("junction %d-%d through the free face normal to axis %d" % (i, j, k))
+        faces[(i, j, img)] = (area, nbonds)
+    for (i, j, img), (area, nbonds) in faces.items():
+        twin = faces.get((j, i, tuple(-v for v in img)))
+        if twin is None:
+            fail("junction %d-%d %s has no twin %d-%d" % (i, j, img, j, i))
+            continue
+        if abs(twin[0] / area - 1) > 1e-9 or twin[1] != nbonds:
+            fail("junction %d-%d: area/bonds %g/%d, from the other side %g/%d"
+                 % (i, j, area, nbonds, twin[0], twin[1]))
+    # across periodic faces too: a 2 x 2 x 2 block has faces with every periodic image axis
+    for k in range(3):
+        if periodic[k] and not any(img[k] != 0 for (_, _, img) in faces):
+            fail("no junction across the periodic faces normal to axis %d" % k)
+    junction_bonds = [(a, b) for ty, a, b in d["bonds"] if ty == 2]
+    if sum(nb for nb in (v[1] for v in faces.values())) != 2 * len(junction_bonds):
+        fail("junction bond counts in .junctions do not add up to the type-2 bonds")
+    lengths = []
+    for a, b in junction_bonds:
+        ma, mb = d["mol"][a], d["mol"][b]
+        if ma == mb or d["type"][a] != 2 or d["type"][b] != 2:
+            fail("junction bond %d-%d not between wall atoms of two cells" % (a, b))
+            continue
+        # the bond must cross a face the .junctions file names, at the image it names, and join
+        # a to the nearest wall particle of the other cell there (cellgen pairs mutual nearest)
+        best, shift = math.inf, None
+        for (i, j, img), _ in faces.items():
+            if (i, j) == (ma, mb):
+                s = tuple(img[k] * t.L[k] for k in range(3))
+                if norm(sub(add(x[b], s), x[a])) < best:
+                    best, shift = norm(sub(add(x[b], s), x[a])), s
+        lengths.append(best)
+        if shift is not None:
+            nearest = min(norm(sub(add(x[c], shift), x[a])) for c in t.wall[mb])
+            if nearest < best * (1 - 1e-12):
+                fail("junction bond %d-%d: %g long, but atom %d has a wall particle of cell %d "
+                     "at %g" % (a, b, best, a, mb, nearest))
+                break
+    if lengths:
+        print("  %d junction bonds, length %.4g..%.4g m" % (len(lengths), min(lengths), max(lengths)))
+        # pairs are taken within gap + wall spacing (= 2 gap with the default gap)
+        if min(lengths) < g * (1 - 1e-9) or max(lengths) > 2 * g * (1 + 1e-9):
+            fail("junction bond lengths %g..%g outside [gap, 2 gap] across their named faces"
+                 % (min(lengths), max(lengths)))
+
+
+def run(args, expect_rc=0):
+    p = subprocess.run(args, capture_output=True, text=True)
+    if p.returncode != expect_rc:
+        fail("%s: exit %d, expected %d\n%s" % (" ".join(args[1:]), p.returncode, expect_rc, p.stderr))
+    return p
+
+
+def generate(cg, tmp, name, extra):
+    out = os.path.join(tmp, name + ".data")
+    run([cg, "tissue", "--cells", "2", "2", "2", "--dx", "20e-6", "--wall-dx", "16e-6",
+         "--seed", "3", "--out", out] + extra)  # later options override the coarse defaults
+    return out
+
+
+def main():
+    cg = sys.argv[1]
+    tmp = tempfile.mkdtemp()
+    # porosity 0 is the unrounded polyhedra: the mesh cuts their edges, finer walls cut less
+    cases = [("p0", ["--porosity", "0", "--wall-dx", "10e-6"], 0.0, 0.025, (True, True, True)),
+             ("p15", ["--porosity", "0.15"], 0.15, 0.005, (True, True, True)),
+             ("p30", ["--porosity", "0.3"], 0.30, 0.005, (True, True, True)),
+             ("slab", ["--porosity", "0.2", "--slab", "z", "--dx", "16e-6"], 0.20, 0.005, (True, True, False))]
+    for name, extra, phi, tol, periodic in cases:
+        print("case %s: %s" % (name, " ".join(extra)))
+        out = generate(cg, tmp, name, extra)
+        if not os.path.exists(out):
+            continue
+        t = Tissue(read_data(out))
+        t.margin = 0.5 * 160e-6
+        stats = read_stats(out + ".stats")
+        if len(t.cells) != 8 or int(stats["cells"]) != 8:
+            fail("expected 8 cells")
+        check_walls(t)
+        check_porosity(t, phi, tol, periodic)
+        check_masses(t)
+        check_wall_gap(t, periodic)
+        check_junctions(t, read_junctions(out + ".junctions"), periodic)
+        if name == "p15":
+            check_fluid(t)
+            again = generate(cg, tmp, "p15b", extra)
+            with open(out) as f1, open(again) as f2:
+                if f1.read().split("\n", 1)[1] != f2.read().split("\n", 1)[1]:
+                    fail("same seed, different data file")
+    print("bad inputs")
+    bad = [(["--porosity", "0.5"], "--porosity must be in [0, 0.5), not 0.5"),
+           (["--porosity", "-0.1"], "--porosity must be in [0, 0.5), not -0.1"),
+           (["--size", "40e-6", "--dx", "10e-6"], "cells too small for the resolution"),
+           (["--size", "40e-6", "--dx", "10e-6"], "--size 4e-05"),
+           (["--frobnicate", "3"], "unknown option '--frobnicate'"),
+           (["--slab", "w"], "--slab must be x, y or z, not 'w'"),
+           (["--porosity", "abc"], "--porosity: not a finite number: 'abc'")]
+    for extra, message in bad:
+        p = run([cg, "tissue", "--cells", "2", "2", "2", "--out", os.path.join(tmp, "bad.data")]
+                + extra, expect_rc=2)  # a later --cells overrides the first
+        if message not in p.stderr:
+            fail("%s: message lacks '%s': %s" % (" ".join(extra), message, p.stderr.strip()))
+    print("FAILED: %d check(s)" % len(FAILS) if FAILS else "all tissue checks passed")
+    sys.exit(1 if FAILS else 0)
+
+
+if __name__ == "__main__":
+    main()
