@@ -3,6 +3,7 @@
 // README.md "Tissue mode" and doc/model.md §10.6.
 #include "tissue.h"
 
+#include "datafile.h"
 #include "geometry.h"
 #include "tissue_geometry.h"
 
@@ -15,7 +16,6 @@
 #include <functional>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -474,6 +474,16 @@ namespace {
     t.fluidCount.push_back(static_cast<long>(fluid.size()));
   }
 
+  // The data file's box: the tissue's, reaching `margin` beyond it along the free axes.
+  void setBox(System &sys, const Box &box, double margin)
+  {
+    for (int d = 0; d < 3; ++d) {
+      const double m = box.periodic[d] ? 0.0 : margin;
+      sys.lo[d] = box.lo[d] - m;
+      sys.hi[d] = box.hi[d] + m;
+    }
+  }
+
   void checkResolution(const std::vector<InBall> &balls, const Setup &s, const Options &o)
   {
     const auto small = std::min_element(balls.begin(), balls.end(),
@@ -693,73 +703,6 @@ namespace {
 
   // ---- output ----------------------------------------------------------------------------------
 
-  using File = std::unique_ptr<std::FILE, int (*)(std::FILE *)>;
-
-  File openOut(const std::string &path)
-  {
-    File f(std::fopen(path.c_str(), "w"), &std::fclose);
-    if (!f) throw std::runtime_error("cannot open " + path + " for writing");
-    return f;
-  }
-
-  void closeOut(File &f, const std::string &path)
-  {
-    if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
-      throw std::runtime_error("error writing " + path);
-  }
-
-  double firstMass(const System &sys, ParticleType type)
-  {
-    for (const Particle &p : sys.particles)
-      if (p.type == type) return p.mass;
-    return sys.particles.front().mass;
-  }
-
-  // The data file of one cell (README.md "Output"), with bond type 2 for the junctions.
-  void writeData(const std::string &path, const Tissue &t, const Box &box, double margin,
-                 const std::string &comment)
-  {
-    const System &sys = t.sys;
-    File f = openOut(path);
-    std::FILE *o = f.get();
-    std::fprintf(o, "%s\n\n%zu atoms\n%zu bonds\n%zu angles\n", comment.c_str(),
-                 sys.particles.size(), sys.bonds.size() + t.junctions.bonds.size(),
-                 sys.triangles.size());
-    std::fprintf(o, "2 atom types\n2 bond types\n1 angle types\n\n");
-    const char *names[3] = {"x", "y", "z"};
-    for (int d = 0; d < 3; ++d) {
-      const double m = box.periodic[d] ? 0.0 : margin;
-      std::fprintf(o, "%.15g %.15g %slo %shi\n", box.lo[d] - m, box.hi[d] + m, names[d], names[d]);
-    }
-    std::fprintf(o, "\nMasses\n\n1 %.15g\n2 %.15g\n", firstMass(sys, kFluid),
-                 firstMass(sys, kWall));
-    std::fprintf(o, "\nAtoms # angle\n\n");
-    for (size_t i = 0; i < sys.particles.size(); ++i) {
-      const Particle &p = sys.particles[i];
-      std::fprintf(o, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
-                   p.x[0], p.x[1], p.x[2]);
-    }
-    std::fprintf(o, "\nBonds\n\n");
-    size_t id = 0;
-    for (const Edge &e : sys.bonds) std::fprintf(o, "%zu 1 %d %d\n", ++id, e[0] + 1, e[1] + 1);
-    for (const auto &e : t.junctions.bonds)
-      std::fprintf(o, "%zu 2 %d %d\n", ++id, e[0] + 1, e[1] + 1);
-    std::fprintf(o, "\nAngles\n\n");
-    for (size_t i = 0; i < sys.triangles.size(); ++i) {
-      const Tri &tr = sys.triangles[i];
-      std::fprintf(o, "%zu 1 %d %d %d\n", i + 1, tr[0] + 1, tr[1] + 1, tr[2] + 1);
-    }
-    // area shares of the wall bonds only (junction bonds carry no wall area)
-    const std::vector<double> aref = bondAreaShares(sys);
-    std::fprintf(o, "\nCellAtoms # rmass xref(3) aref\n\n");
-    for (size_t i = 0; i < sys.particles.size(); ++i) {
-      const Particle &p = sys.particles[i];
-      std::fprintf(o, "%zu %.15g %.15g %.15g %.15g %.15g\n", i + 1, p.mass, p.x[0], p.x[1], p.x[2],
-                   aref[i]);
-    }
-    closeOut(f, path);
-  }
-
   void writeJunctions(const std::string &path, const Tissue &t, const Setup &s)
   {
     File f = openOut(path);
@@ -824,6 +767,7 @@ namespace {
       appendCell(b.tissue, static_cast<int>(i + 1), fluid, b.meshes[i], o);
     }
     b.tissue.junctions = junctions(b.voronoi, b.rounded, b.meshes, b.tissue.wallOffset, s);
+    setBox(b.tissue.sys, s.box, o.margin * o.size);
     return b;
   }
 
@@ -847,8 +791,11 @@ namespace {
                   " | DX=%.15g gap=%.15g junction_gap=%.15g cells=%d fluid=%ld wall=%ld "
                   "junction_bonds=%zu",
                   s.dx, s.gap, s.junctionGap, s.n, fluid, wall, b.tissue.junctions.bonds.size());
-    writeData(o.out, b.tissue, s.box, o.margin * o.size,
-              std::string(kVersion) + " | args: " + args + buf);
+    // the data file of one cell (README.md "Output"), with bond type 2 for the junctions
+    DataExtras extras;
+    extras.bondTypes = 2;
+    extras.junctions = b.tissue.junctions.bonds;
+    writeData(o.out, b.tissue.sys, std::string(kVersion) + " | args: " + args + buf, extras);
     writeJunctions(o.out + ".junctions", b.tissue, s);
     Stats st = statistics(b, o);
     const SurfaceStats edges = [&] {
