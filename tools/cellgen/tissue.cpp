@@ -37,7 +37,9 @@ namespace {
       "usage: cellgen tissue (--cells NX NY NZ | --count N) [--size D=160e-6] [--cv 0.2]\n"
       "               [--porosity 0.2] [--periodic xyz | --slab x|y|z] [--junction-gap G]\n"
       "               [--dx DX=D/16] [--gap G=DX/2] [--wall-dx L=DX] [--rho0 1000]\n"
-      "               [--wall-mass MW] [--seed 1] [--margin F=0.5] --out FILE.data\n"
+      "               [--wall-mass MW] [--seed 1] [--margin F=0.5] [--dihedrals] --out FILE.data\n"
+      "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
+      "            dihedral_style cell/bending.\n"
       "Writes FILE.data, FILE.junctions and FILE.stats. SI units. See tools/cellgen/README.md.\n";
 
   struct UsageError : std::runtime_error {
@@ -55,6 +57,7 @@ namespace {
     double rho0 = 1000;
     double margin = 0.5;
     std::uint64_t seed = 1;
+    bool dihedrals = false;
     std::string out;
   };
 
@@ -157,6 +160,7 @@ namespace {
         {"--seed", [](Args &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
         {"--margin", [](Args &a, Options &o) { o.margin = a.real(); }},
         {"--out", [](Args &a, Options &o) { o.out = a.word(); }},
+        {"--dihedrals", [](Args &, Options &o) { o.dihedrals = true; }},
     };
     return h;
   }
@@ -795,6 +799,7 @@ namespace {
     DataExtras extras;
     extras.bondTypes = 2;
     extras.junctions = b.tissue.junctions.bonds;
+    if (o.dihedrals) extras.dihedrals = wallDihedrals(b.tissue.sys);
     writeData(o.out, b.tissue.sys, std::string(kVersion) + " | args: " + args + buf, extras);
     writeJunctions(o.out + ".junctions", b.tissue, s);
     Stats st = statistics(b, o);
@@ -811,6 +816,8 @@ namespace {
     st.add("wall_bond_length", fmt("%.3g %.3g %.3g", edges.minEdge, edges.meanEdge, edges.maxEdge),
            "m, min mean max (--wall-dx " + show(s.wallDx) + ")");
     st.add("junction_bonds", std::to_string(b.tissue.junctions.bonds.size()));
+    if (o.dihedrals)
+      st.add("dihedrals", std::to_string(extras.dihedrals.size()), "one per wall bond");
     st.add("resolution", fmt("dx %.4g gap %.4g junction_gap %.4g", s.dx, s.gap, s.junctionGap),
            "m");
     writeStats(o.out + ".stats", st);
