@@ -11,6 +11,7 @@
 #include "atom.h"
 #include "cell_params.h"
 #include "cell_restart.h"
+#include "cell_triangle.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -28,17 +29,8 @@ static constexpr int RESTART_VERSION = 1;    // 1: -version, G, t0, reference pe
 
 namespace {
 
-inline double dot(const double *a, const double *b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-inline void cross(const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
+using CellTriangle::cross;
+using CellTriangle::dot;
 
 // the hinge of the triangles (a, b, c) and (d, c, b) about the edge e = x_c - x_b, with
 // u1 = x_a - x_b and u2 = x_d - x_b
