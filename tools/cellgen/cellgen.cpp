@@ -1,6 +1,7 @@
 // cellgen: writes the initial geometry of cellsph plant cells (fluid-filled spheres bounded by a
 // triangulated wall) as a LAMMPS data file for atom_style angle (molecular with --dihedrals).
 // See README.md.
+#include "cli.h"
 #include "datafile.h"
 #include "geometry.h"
 #include "tissue.h"
@@ -11,7 +12,6 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
-#include <iostream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -41,10 +41,6 @@ constexpr const char *kUsage =
     "            dihedral_style cell/bending.\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n"
     "A packed tissue of polyhedral cells: cellgen tissue --help.\n";
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 enum class Mesh { Icosahedral, Spiral };
 
@@ -184,11 +180,6 @@ const std::map<std::string, Handler> &optionHandlers()
        [](ArgReader &, Options &) { throw UsageError("2-D geometries are not supported"); }},
   };
   return handlers;
-}
-
-void require(bool ok, const std::string &message)
-{
-  if (!ok) throw UsageError(message);
 }
 
 void validate(const Options &o)
@@ -412,20 +403,6 @@ void run(const Options &o, const std::string &args)
 int main(int argc, char **argv)
 {
   if (argc > 1 && std::string(argv[1]) == "tissue") return cellgen::tissueMain(argc - 1, argv + 1);
-  const std::vector<std::string> words(argv + 1, argv + argc);
-  if (std::find(words.begin(), words.end(), "--help") != words.end() ||
-      std::find(words.begin(), words.end(), "-h") != words.end()) {
-    std::cout << kUsage;
-    return 0;
-  }
-  try {
-    run(parseOptions(argc, argv), commandLine(argc, argv));
-  } catch (const UsageError &e) {
-    std::cerr << "cellgen: " << e.what() << "\n" << kUsage;
-    return 2;
-  } catch (const std::exception &e) {
-    std::cerr << "cellgen: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return cellgen::runMain(argc, argv, "cellgen", kUsage,
+                          [&] { run(parseOptions(argc, argv), commandLine(argc, argv)); });
 }

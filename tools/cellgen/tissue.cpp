@@ -3,6 +3,7 @@
 // README.md "Tissue mode" and doc/model.md §10.6.
 #include "tissue.h"
 
+#include "cli.h"
 #include "datafile.h"
 #include "geometry.h"
 #include "tissue_geometry.h"
@@ -41,10 +42,6 @@ namespace {
       "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
       "            dihedral_style cell/bending.\n"
       "Writes FILE.data, FILE.junctions and FILE.stats. SI units. See tools/cellgen/README.md.\n";
-
-  struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-  };
 
   struct Options {
     std::optional<std::array<long, 3>> cells;
@@ -163,11 +160,6 @@ namespace {
         {"--dihedrals", [](Args &, Options &o) { o.dihedrals = true; }},
     };
     return h;
-  }
-
-  void require(bool ok, const std::string &message)
-  {
-    if (!ok) throw UsageError(message);
   }
 
   void validate(const Options &o)
@@ -831,22 +823,8 @@ namespace {
 
 int tissueMain(int argc, char **argv)
 {
-  const std::vector<std::string> words(argv + 1, argv + argc);
-  if (std::find(words.begin(), words.end(), "--help") != words.end() ||
-      std::find(words.begin(), words.end(), "-h") != words.end()) {
-    std::cout << kUsage;
-    return 0;
-  }
-  try {
-    run(parse(argc, argv), commandLine(argc, argv));
-  } catch (const UsageError &e) {
-    std::cerr << "cellgen tissue: " << e.what() << "\n" << kUsage;
-    return 2;
-  } catch (const std::exception &e) {
-    std::cerr << "cellgen tissue: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return runMain(argc, argv, "cellgen tissue", kUsage,
+                 [&] { run(parse(argc, argv), commandLine(argc, argv)); });
 }
 
 }    // namespace cellgen
