@@ -78,34 +78,35 @@ namespace {
     }
     double real()
     {
-      const std::string s = word();
-      size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(s, &used);
-      } catch (const std::logic_error &) {
-        used = 0;
-      }
-      if (used == 0 || used != s.size() || !std::isfinite(v))
-        throw UsageError(option_ + ": not a finite number: '" + s + "'");
-      return v;
+      return number<double>("a finite number", [](const std::string &s, size_t *used) {
+        const double v = std::stod(s, used);
+        if (!std::isfinite(v)) *used = 0;
+        return v;
+      });
     }
     long integer()
     {
+      return number<long>("an integer",
+                          [](const std::string &s, size_t *used) { return std::stol(s, used); });
+    }
+
+   private:
+    // the next word as a T, all of it read by parse(word, &characters used)
+    template <class T, class F> T number(const char *what, F parse)
+    {
       const std::string s = word();
       size_t used = 0;
-      long v = 0;
+      T v{};
       try {
-        v = std::stol(s, &used);
+        v = parse(s, &used);
       } catch (const std::logic_error &) {
         used = 0;
       }
       if (used == 0 || used != s.size())
-        throw UsageError(option_ + ": not an integer: '" + s + "'");
+        throw UsageError(option_ + ": not " + what + ": '" + s + "'");
       return v;
     }
 
-   private:
     std::vector<std::string> words_;
     size_t pos_ = 0;
     std::string option_;
