@@ -248,13 +248,8 @@ double BondCellLamella::equilibrium_distance(int)
 
 void BondCellLamella::write_restart(FILE *fp)
 {
-  const double marker = -RESTART_VERSION;
-  fwrite(&marker, sizeof(double), 1, fp);
-  const int n = atom->nbondtypes;
-  fwrite(&stiffness[1], sizeof(double), n, fp);
-  fwrite(&strength[1], sizeof(double), n, fp);
-  fwrite(&area[1], sizeof(double), n, fp);
-  fwrite(&gamma[1], sizeof(double), n, fp);
+  CellRestart::write_columns(fp, RESTART_VERSION, atom->nbondtypes, &stiffness[1], &strength[1],
+                             &area[1], &gamma[1]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -263,21 +258,8 @@ void BondCellLamella::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->nbondtypes;
-  double first = 0.0;
-  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const int version = CellRestart::version(first);
-  CellRestart::refuse_newer(error, FLERR, "Bond style cell/lamella", version, RESTART_VERSION);
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &stiffness[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &strength[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &area[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&stiffness[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&strength[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&area[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
+  CellRestart::read_version(lmp, fp, FLERR, "Bond style cell/lamella", RESTART_VERSION);
+  CellRestart::read_columns(lmp, fp, n, &stiffness[1], &strength[1], &area[1], &gamma[1]);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 

@@ -288,13 +288,8 @@ double BondCellNeoHookean::equilibrium_distance(int type)
 void BondCellNeoHookean::write_restart(FILE *fp)
 {
   // version 1 (no marker) began with G of bond type 1 > 0; later versions with -version
-  const double marker = -RESTART_VERSION;
-  fwrite(&marker, sizeof(double), 1, fp);
-  const int n = atom->nbondtypes;
-  fwrite(&shear[1], sizeof(double), n, fp);
-  fwrite(&thickness[1], sizeof(double), n, fp);
-  fwrite(&gamma[1], sizeof(double), n, fp);
-  fwrite(&law[1], sizeof(int), n, fp);
+  CellRestart::write_columns(fp, RESTART_VERSION, atom->nbondtypes, &shear[1], &thickness[1],
+                             &gamma[1], &law[1]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -304,23 +299,13 @@ void BondCellNeoHookean::read_restart(FILE *fp)
   allocate();
   const int n = atom->nbondtypes;
   double first = 0.0;
-  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const int version = CellRestart::version(first);
-  CellRestart::refuse_newer(error, FLERR, "Bond style cell/neohookean", version, RESTART_VERSION);
-  if (comm->me == 0) {
-    // version 1: the value read was G of bond type 1
-    if (version == 1) shear[1] = first;
-    const int skip = version == 1 ? 1 : 0;
-    utils::sfread(FLERR, &shear[1 + skip], sizeof(double), n - skip, fp, nullptr, error);
-    utils::sfread(FLERR, &thickness[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &law[1], sizeof(int), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&shear[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&thickness[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&law[1], n, MPI_INT, 0, world);
+  const int version = CellRestart::read_version(lmp, fp, FLERR, "Bond style cell/neohookean",
+                                                RESTART_VERSION, &first);
+  // version 1: the value read was G of bond type 1
+  if (version == 1) shear[1] = first;
+  const int skip = version == 1 ? 1 : 0;
+  CellRestart::read_columns(lmp, fp, n - skip, &shear[1 + skip]);
+  CellRestart::read_columns(lmp, fp, n, &thickness[1], &gamma[1], &law[1]);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 

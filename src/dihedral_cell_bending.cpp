@@ -11,6 +11,7 @@
 #include "atom.h"
 #include "cell_params.h"
 #include "cell_restart.h"
+#include "cell_triangle.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -28,17 +29,8 @@ static constexpr int RESTART_VERSION = 1;    // 1: -version, G, t0, reference pe
 
 namespace {
 
-inline double dot(const double *a, const double *b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-inline void cross(const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
+using CellTriangle::cross;
+using CellTriangle::dot;
 
 // the hinge of the triangles (a, b, c) and (d, c, b) about the edge e = x_c - x_b, with
 // u1 = x_a - x_b and u2 = x_d - x_b
@@ -281,12 +273,8 @@ void DihedralCellBending::init_style()
 
 void DihedralCellBending::write_restart(FILE *fp)
 {
-  const double marker = -RESTART_VERSION;
-  fwrite(&marker, sizeof(double), 1, fp);
-  const int n = atom->ndihedraltypes;
-  fwrite(&shear[1], sizeof(double), n, fp);
-  fwrite(&thickness[1], sizeof(double), n, fp);
-  fwrite(&reference[1], sizeof(int), n, fp);
+  CellRestart::write_columns(fp, RESTART_VERSION, atom->ndihedraltypes, &shear[1], &thickness[1],
+                             &reference[1]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -295,19 +283,8 @@ void DihedralCellBending::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->ndihedraltypes;
-  double first = 0.0;
-  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const int version = CellRestart::version(first);
-  CellRestart::refuse_newer(error, FLERR, "Dihedral style cell/bending", version, RESTART_VERSION);
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &shear[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &thickness[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &reference[1], sizeof(int), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&shear[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&thickness[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&reference[1], n, MPI_INT, 0, world);
+  CellRestart::read_version(lmp, fp, FLERR, "Dihedral style cell/bending", RESTART_VERSION);
+  CellRestart::read_columns(lmp, fp, n, &shear[1], &thickness[1], &reference[1]);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 

@@ -582,9 +582,7 @@ void PairCellWall::read_restart(FILE *fp)
 void PairCellWall::write_restart_settings(FILE *fp)
 {
   // version 1 (no marker) began with the cutoff > 0; later versions with -version
-  const double marker = -RESTART_VERSION;
-  fwrite(&marker, sizeof(double), 1, fp);
-  fwrite(&cut_global, sizeof(double), 1, fp);
+  CellRestart::write_columns(fp, RESTART_VERSION, 1, &cut_global);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -592,14 +590,11 @@ void PairCellWall::write_restart_settings(FILE *fp)
 void PairCellWall::read_restart_settings(FILE *fp)
 {
   double first = 0.0;
-  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const int version = CellRestart::version(first);
-  CellRestart::refuse_newer(error, FLERR, "Pair cell/wall", version, RESTART_VERSION);
+  const int version =
+      CellRestart::read_version(lmp, fp, FLERR, "Pair cell/wall", RESTART_VERSION, &first);
+  // version 1: the value read was the cutoff
   cut_global = first;
-  if (version >= 2 && comm->me == 0)
-    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
+  if (version >= 2) CellRestart::read_columns(lmp, fp, 1, &cut_global);
 }
 
 /* ----------------------------------------------------------------------

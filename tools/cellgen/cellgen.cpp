@@ -1,6 +1,8 @@
 // cellgen: writes the initial geometry of cellsph plant cells (fluid-filled spheres bounded by a
 // triangulated wall) as a LAMMPS data file for atom_style angle (molecular with --dihedrals).
 // See README.md.
+#include "cli.h"
+#include "datafile.h"
 #include "geometry.h"
 #include "tissue.h"
 
@@ -10,9 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
-#include <iostream>
 #include <map>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,10 +41,6 @@ constexpr const char *kUsage =
     "            dihedral_style cell/bending.\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n"
     "A packed tissue of polyhedral cells: cellgen tissue --help.\n";
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 enum class Mesh { Icosahedral, Spiral };
 
@@ -186,11 +182,6 @@ const std::map<std::string, Handler> &optionHandlers()
   return handlers;
 }
 
-void require(bool ok, const std::string &message)
-{
-  if (!ok) throw UsageError(message);
-}
-
 void validate(const Options &o)
 {
   require(o.radius > 0, "--radius must be positive");
@@ -258,86 +249,6 @@ std::string commandLine(int argc, char **argv)
   std::string s;
   for (int i = 1; i < argc; ++i) s += std::string(i > 1 ? " " : "") + argv[i];
   return s;
-}
-
-// ---- data file ---------------------------------------------------------------------------
-
-using File = std::unique_ptr<std::FILE, int (*)(std::FILE *)>;
-
-// Per-type mass of the Masses section: that of cell 1 (CellAtoms holds every atom's own mass).
-// Walls only (--nfluid 0): no atom has type 1, which gets the wall mass as a placeholder.
-double typeMass(const System &sys, ParticleType type)
-{
-  auto first = std::find_if(sys.particles.begin(), sys.particles.end(),
-                            [type](const Particle &p) { return p.type == type; });
-  if (first == sys.particles.end())
-    first = std::find_if(sys.particles.begin(), sys.particles.end(),
-                         [](const Particle &p) { return p.type == kWall; });
-  return first->mass;
-}
-
-void writeHeader(std::FILE *f, const System &sys, const std::string &comment, size_t ndihedrals)
-{
-  std::fprintf(f, "%s\n\n", comment.c_str());
-  std::fprintf(f, "%zu atoms\n%zu bonds\n%zu angles\n", sys.particles.size(), sys.bonds.size(),
-               sys.triangles.size());
-  if (ndihedrals > 0) std::fprintf(f, "%zu dihedrals\n", ndihedrals);
-  std::fprintf(f, "2 atom types\n1 bond types\n1 angle types\n");
-  if (ndihedrals > 0) std::fprintf(f, "1 dihedral types\n");
-  std::fprintf(f, "\n");
-  const char *names[3] = {"x", "y", "z"};
-  for (int d = 0; d < 3; ++d)
-    std::fprintf(f, "%.15g %.15g %slo %shi\n", sys.lo[d], sys.hi[d], names[d], names[d]);
-  std::fprintf(f, "\nMasses\n\n1 %.15g\n2 %.15g\n", typeMass(sys, kFluid), typeMass(sys, kWall));
-}
-
-// Dihedrals section (--dihedrals): one per wall edge, a b c d with (a, b, c) and (d, c, b) the
-// outward triangles sharing the edge b-c (dihedral_style cell/bending)
-void writeDihedrals(std::FILE *f, const std::vector<Quad> &dihedrals)
-{
-  std::fprintf(f, "\nDihedrals\n\n");
-  for (size_t i = 0; i < dihedrals.size(); ++i) {
-    const Quad &q = dihedrals[i];
-    std::fprintf(f, "%zu 1 %d %d %d %d\n", i + 1, q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
-  }
-}
-
-// Dihedrals, if any, come before CellAtoms: LAMMPS 29 Sep 2021 reads no section after a fix section
-void writeSections(std::FILE *f, const System &sys, const std::vector<Quad> &dihedrals)
-{
-  std::fprintf(f, "\nAtoms # %s\n\n", dihedrals.empty() ? "angle" : "molecular");
-  for (size_t i = 0; i < sys.particles.size(); ++i) {
-    const Particle &p = sys.particles[i];
-    std::fprintf(f, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
-                 p.x[0], p.x[1], p.x[2]);
-  }
-  std::fprintf(f, "\nBonds\n\n");
-  for (size_t i = 0; i < sys.bonds.size(); ++i)
-    std::fprintf(f, "%zu 1 %d %d\n", i + 1, sys.bonds[i][0] + 1, sys.bonds[i][1] + 1);
-  std::fprintf(f, "\nAngles\n\n");
-  for (size_t i = 0; i < sys.triangles.size(); ++i) {
-    const Tri &t = sys.triangles[i];
-    std::fprintf(f, "%zu 1 %d %d %d\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
-  }
-  if (!dihedrals.empty()) writeDihedrals(f, dihedrals);
-  const std::vector<double> aref = bondAreaShares(sys);
-  std::fprintf(f, "\nCellAtoms # rmass xref(3) aref\n\n");
-  for (size_t i = 0; i < sys.particles.size(); ++i) {
-    const Particle &p = sys.particles[i];
-    std::fprintf(f, "%zu %.15g %.15g %.15g %.15g %.15g\n", i + 1, p.mass, p.x[0], p.x[1], p.x[2],
-                 aref[i]);
-  }
-}
-
-void writeData(const std::string &path, const System &sys, const std::string &comment,
-               const std::vector<Quad> &dihedrals)
-{
-  File f(std::fopen(path.c_str(), "w"), &std::fclose);
-  if (!f) throw std::runtime_error("cannot open " + path + " for writing");
-  writeHeader(f.get(), sys, comment, dihedrals.size());
-  writeSections(f.get(), sys, dihedrals);
-  if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
-    throw std::runtime_error("error writing " + path);
 }
 
 // ---- run and summary ---------------------------------------------------------------------
@@ -480,8 +391,9 @@ void run(const Options &o, const std::string &args)
   const System sys = buildSystem(unit, cells, params);
   const SurfaceStats stats = surfaceStats(unit);
   const Totals t = totals(sys, cells, stats, o.shape);
-  writeData(o.out, sys, comment(o, args, sp, t),
-            o.dihedrals ? wallDihedrals(sys) : std::vector<Quad>());
+  DataExtras extras;
+  if (o.dihedrals) extras.dihedrals = wallDihedrals(sys);
+  writeData(o.out, sys, comment(o, args, sp, t), extras);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   printSummary(o, sp, sys, t, mesh, stats, elapsed.count());
 }
@@ -491,20 +403,6 @@ void run(const Options &o, const std::string &args)
 int main(int argc, char **argv)
 {
   if (argc > 1 && std::string(argv[1]) == "tissue") return cellgen::tissueMain(argc - 1, argv + 1);
-  const std::vector<std::string> words(argv + 1, argv + argc);
-  if (std::find(words.begin(), words.end(), "--help") != words.end() ||
-      std::find(words.begin(), words.end(), "-h") != words.end()) {
-    std::cout << kUsage;
-    return 0;
-  }
-  try {
-    run(parseOptions(argc, argv), commandLine(argc, argv));
-  } catch (const UsageError &e) {
-    std::cerr << "cellgen: " << e.what() << "\n" << kUsage;
-    return 2;
-  } catch (const std::exception &e) {
-    std::cerr << "cellgen: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return cellgen::runMain(argc, argv, "cellgen", kUsage,
+                          [&] { run(parseOptions(argc, argv), commandLine(argc, argv)); });
 }

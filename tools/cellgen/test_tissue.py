@@ -13,8 +13,9 @@ junction gap outside the wall mesh, Steiner's formula) within 0.005 of the reque
 0.03, the sharp edges cut by the mesh); masses and aref as documented; junction bonds only between
 wall atoms of different cells, each across a face of the .junctions file with the image it names;
 contact areas positive and equal from both sides, bond counts matching; the slab without junctions
-through its free faces; the same file for the same seed; and bad inputs refused with the option and
-value named. Exits non-zero on any failure.
+through its free faces; the same file for the same seed; with --dihedrals one dihedral a b c d per
+wall bond b-c, (a, b, c) and (d, c, b) wall triangles as written, and the rest of the file as
+without; and bad inputs refused with the option and value named. Exits non-zero on any failure.
 """
 import math
 import os
@@ -344,6 +345,46 @@ def check_junctions(t, rows, periodic):
                  % (min(lengths), max(lengths)))
 
 
+def check_dihedrals(plain, with_dihedrals, stats):
+    """--dihedrals: the header, a molecular Atoms tag, the Dihedrals section before CellAtoms,
+    one dihedral per wall bond b-c with (a, b, c) and (d, c, b) wall triangles (outward, as in the
+    Angles section), and every other line as in the file written without it."""
+    with open(plain) as f:
+        a = f.read().split("\n")[1:]
+    with open(with_dihedrals) as f:
+        b = f.read().split("\n")[1:]
+    start = b.index("Dihedrals")
+    end = b.index("CellAtoms # rmass xref(3) aref")
+    quads = [tuple(map(int, line.split())) for line in b[start + 1:end] if line.strip()]
+    rest = [line for k, line in enumerate(b) if not start - 1 <= k < end - 1
+            and not line.endswith(" dihedrals") and line != "1 dihedral types"]
+    rest = [line.replace("Atoms # molecular", "Atoms # angle") for line in rest]
+    if rest != a:
+        fail("--dihedrals changes the file beyond the dihedrals")
+    if "Atoms # molecular" not in b or "1 dihedral types" not in b:
+        fail("--dihedrals: no 'Atoms # molecular' or '1 dihedral types'")
+    d = read_data(plain)
+    count = [line for line in b if line.endswith(" dihedrals")]
+    wall = {(min(p, q), max(p, q)) for ty, p, q in d["bonds"] if ty == 1}
+    if count != ["%d dihedrals" % len(wall)] or len(quads) != len(wall):
+        fail("--dihedrals: %s and %d dihedrals for %d wall bonds" % (count, len(quads), len(wall)))
+    if int(stats.get("dihedrals", -1)) != len(quads):
+        fail("--dihedrals: the stats count %s, not %d" % (stats.get("dihedrals"), len(quads)))
+    tris = set()
+    for t in d["tri"]:
+        tris.update({t, (t[1], t[2], t[0]), (t[2], t[0], t[1])})
+    middles = set()
+    for k, (ident, ty, p, q, r, s) in enumerate(quads):
+        middles.add((min(q, r), max(q, r)))
+        if ident != k + 1 or ty != 1 or (p, q, r) not in tris or (s, r, q) not in tris:
+            fail("dihedral %d %d %d %d %d: not two outward wall triangles about %d-%d"
+                 % (ident, p, q, r, s, q, r))
+            break
+    if middles != wall:
+        fail("--dihedrals: the dihedral middles are not the wall bonds, each once")
+    print("  --dihedrals: %d dihedrals, one per wall bond" % len(quads))
+
+
 def run(args, expect_rc=0):
     p = subprocess.run(args, capture_output=True, text=True)
     if p.returncode != expect_rc:
@@ -387,6 +428,8 @@ def main():
             with open(out) as f1, open(again) as f2:
                 if f1.read().split("\n", 1)[1] != f2.read().split("\n", 1)[1]:
                     fail("same seed, different data file")
+            bent = generate(cg, tmp, "p15d", extra + ["--dihedrals"])
+            check_dihedrals(out, bent, read_stats(bent + ".stats"))
     print("bad inputs")
     bad = [(["--porosity", "0.5"], "--porosity must be in [0, 0.5), not 0.5"),
            (["--porosity", "-0.1"], "--porosity must be in [0, 0.5), not -0.1"),

@@ -3,6 +3,8 @@
 // README.md "Tissue mode" and doc/model.md §10.6.
 #include "tissue.h"
 
+#include "cli.h"
+#include "datafile.h"
 #include "geometry.h"
 #include "tissue_geometry.h"
 
@@ -15,7 +17,6 @@
 #include <functional>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -37,12 +38,10 @@ namespace {
       "usage: cellgen tissue (--cells NX NY NZ | --count N) [--size D=160e-6] [--cv 0.2]\n"
       "               [--porosity 0.2] [--periodic xyz | --slab x|y|z] [--junction-gap G]\n"
       "               [--dx DX=D/16] [--gap G=DX/2] [--wall-dx L=DX] [--rho0 1000]\n"
-      "               [--wall-mass MW] [--seed 1] [--margin F=0.5] --out FILE.data\n"
+      "               [--wall-mass MW] [--seed 1] [--margin F=0.5] [--dihedrals] --out FILE.data\n"
+      "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
+      "            dihedral_style cell/bending.\n"
       "Writes FILE.data, FILE.junctions and FILE.stats. SI units. See tools/cellgen/README.md.\n";
-
-  struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-  };
 
   struct Options {
     std::optional<std::array<long, 3>> cells;
@@ -55,6 +54,7 @@ namespace {
     double rho0 = 1000;
     double margin = 0.5;
     std::uint64_t seed = 1;
+    bool dihedrals = false;
     std::string out;
   };
 
@@ -78,34 +78,35 @@ namespace {
     }
     double real()
     {
-      const std::string s = word();
-      size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(s, &used);
-      } catch (const std::logic_error &) {
-        used = 0;
-      }
-      if (used == 0 || used != s.size() || !std::isfinite(v))
-        throw UsageError(option_ + ": not a finite number: '" + s + "'");
-      return v;
+      return number<double>("a finite number", [](const std::string &s, size_t *used) {
+        const double v = std::stod(s, used);
+        if (!std::isfinite(v)) *used = 0;
+        return v;
+      });
     }
     long integer()
     {
+      return number<long>("an integer",
+                          [](const std::string &s, size_t *used) { return std::stol(s, used); });
+    }
+
+   private:
+    // the next word as a T, all of it read by parse(word, &characters used)
+    template <class T, class F> T number(const char *what, F parse)
+    {
       const std::string s = word();
       size_t used = 0;
-      long v = 0;
+      T v{};
       try {
-        v = std::stol(s, &used);
+        v = parse(s, &used);
       } catch (const std::logic_error &) {
         used = 0;
       }
       if (used == 0 || used != s.size())
-        throw UsageError(option_ + ": not an integer: '" + s + "'");
+        throw UsageError(option_ + ": not " + what + ": '" + s + "'");
       return v;
     }
 
-   private:
     std::vector<std::string> words_;
     size_t pos_ = 0;
     std::string option_;
@@ -157,13 +158,9 @@ namespace {
         {"--seed", [](Args &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
         {"--margin", [](Args &a, Options &o) { o.margin = a.real(); }},
         {"--out", [](Args &a, Options &o) { o.out = a.word(); }},
+        {"--dihedrals", [](Args &, Options &o) { o.dihedrals = true; }},
     };
     return h;
-  }
-
-  void require(bool ok, const std::string &message)
-  {
-    if (!ok) throw UsageError(message);
   }
 
   void validate(const Options &o)
@@ -474,6 +471,16 @@ namespace {
     t.fluidCount.push_back(static_cast<long>(fluid.size()));
   }
 
+  // The data file's box: the tissue's, reaching `margin` beyond it along the free axes.
+  void setBox(System &sys, const Box &box, double margin)
+  {
+    for (int d = 0; d < 3; ++d) {
+      const double m = box.periodic[d] ? 0.0 : margin;
+      sys.lo[d] = box.lo[d] - m;
+      sys.hi[d] = box.hi[d] + m;
+    }
+  }
+
   void checkResolution(const std::vector<InBall> &balls, const Setup &s, const Options &o)
   {
     const auto small = std::min_element(balls.begin(), balls.end(),
@@ -693,73 +700,6 @@ namespace {
 
   // ---- output ----------------------------------------------------------------------------------
 
-  using File = std::unique_ptr<std::FILE, int (*)(std::FILE *)>;
-
-  File openOut(const std::string &path)
-  {
-    File f(std::fopen(path.c_str(), "w"), &std::fclose);
-    if (!f) throw std::runtime_error("cannot open " + path + " for writing");
-    return f;
-  }
-
-  void closeOut(File &f, const std::string &path)
-  {
-    if (std::ferror(f.get()) || std::fclose(f.release()) != 0)
-      throw std::runtime_error("error writing " + path);
-  }
-
-  double firstMass(const System &sys, ParticleType type)
-  {
-    for (const Particle &p : sys.particles)
-      if (p.type == type) return p.mass;
-    return sys.particles.front().mass;
-  }
-
-  // The data file of one cell (README.md "Output"), with bond type 2 for the junctions.
-  void writeData(const std::string &path, const Tissue &t, const Box &box, double margin,
-                 const std::string &comment)
-  {
-    const System &sys = t.sys;
-    File f = openOut(path);
-    std::FILE *o = f.get();
-    std::fprintf(o, "%s\n\n%zu atoms\n%zu bonds\n%zu angles\n", comment.c_str(),
-                 sys.particles.size(), sys.bonds.size() + t.junctions.bonds.size(),
-                 sys.triangles.size());
-    std::fprintf(o, "2 atom types\n2 bond types\n1 angle types\n\n");
-    const char *names[3] = {"x", "y", "z"};
-    for (int d = 0; d < 3; ++d) {
-      const double m = box.periodic[d] ? 0.0 : margin;
-      std::fprintf(o, "%.15g %.15g %slo %shi\n", box.lo[d] - m, box.hi[d] + m, names[d], names[d]);
-    }
-    std::fprintf(o, "\nMasses\n\n1 %.15g\n2 %.15g\n", firstMass(sys, kFluid),
-                 firstMass(sys, kWall));
-    std::fprintf(o, "\nAtoms # angle\n\n");
-    for (size_t i = 0; i < sys.particles.size(); ++i) {
-      const Particle &p = sys.particles[i];
-      std::fprintf(o, "%zu %d %d %.15g %.15g %.15g\n", i + 1, p.molecule, static_cast<int>(p.type),
-                   p.x[0], p.x[1], p.x[2]);
-    }
-    std::fprintf(o, "\nBonds\n\n");
-    size_t id = 0;
-    for (const Edge &e : sys.bonds) std::fprintf(o, "%zu 1 %d %d\n", ++id, e[0] + 1, e[1] + 1);
-    for (const auto &e : t.junctions.bonds)
-      std::fprintf(o, "%zu 2 %d %d\n", ++id, e[0] + 1, e[1] + 1);
-    std::fprintf(o, "\nAngles\n\n");
-    for (size_t i = 0; i < sys.triangles.size(); ++i) {
-      const Tri &tr = sys.triangles[i];
-      std::fprintf(o, "%zu 1 %d %d %d\n", i + 1, tr[0] + 1, tr[1] + 1, tr[2] + 1);
-    }
-    // area shares of the wall bonds only (junction bonds carry no wall area)
-    const std::vector<double> aref = bondAreaShares(sys);
-    std::fprintf(o, "\nCellAtoms # rmass xref(3) aref\n\n");
-    for (size_t i = 0; i < sys.particles.size(); ++i) {
-      const Particle &p = sys.particles[i];
-      std::fprintf(o, "%zu %.15g %.15g %.15g %.15g %.15g\n", i + 1, p.mass, p.x[0], p.x[1], p.x[2],
-                   aref[i]);
-    }
-    closeOut(f, path);
-  }
-
   void writeJunctions(const std::string &path, const Tissue &t, const Setup &s)
   {
     File f = openOut(path);
@@ -824,6 +764,7 @@ namespace {
       appendCell(b.tissue, static_cast<int>(i + 1), fluid, b.meshes[i], o);
     }
     b.tissue.junctions = junctions(b.voronoi, b.rounded, b.meshes, b.tissue.wallOffset, s);
+    setBox(b.tissue.sys, s.box, o.margin * o.size);
     return b;
   }
 
@@ -847,8 +788,12 @@ namespace {
                   " | DX=%.15g gap=%.15g junction_gap=%.15g cells=%d fluid=%ld wall=%ld "
                   "junction_bonds=%zu",
                   s.dx, s.gap, s.junctionGap, s.n, fluid, wall, b.tissue.junctions.bonds.size());
-    writeData(o.out, b.tissue, s.box, o.margin * o.size,
-              std::string(kVersion) + " | args: " + args + buf);
+    // the data file of one cell (README.md "Output"), with bond type 2 for the junctions
+    DataExtras extras;
+    extras.bondTypes = 2;
+    extras.junctions = b.tissue.junctions.bonds;
+    if (o.dihedrals) extras.dihedrals = wallDihedrals(b.tissue.sys);
+    writeData(o.out, b.tissue.sys, std::string(kVersion) + " | args: " + args + buf, extras);
     writeJunctions(o.out + ".junctions", b.tissue, s);
     Stats st = statistics(b, o);
     const SurfaceStats edges = [&] {
@@ -864,6 +809,8 @@ namespace {
     st.add("wall_bond_length", fmt("%.3g %.3g %.3g", edges.minEdge, edges.meanEdge, edges.maxEdge),
            "m, min mean max (--wall-dx " + show(s.wallDx) + ")");
     st.add("junction_bonds", std::to_string(b.tissue.junctions.bonds.size()));
+    if (o.dihedrals)
+      st.add("dihedrals", std::to_string(extras.dihedrals.size()), "one per wall bond");
     st.add("resolution", fmt("dx %.4g gap %.4g junction_gap %.4g", s.dx, s.gap, s.junctionGap),
            "m");
     writeStats(o.out + ".stats", st);
@@ -877,22 +824,8 @@ namespace {
 
 int tissueMain(int argc, char **argv)
 {
-  const std::vector<std::string> words(argv + 1, argv + argc);
-  if (std::find(words.begin(), words.end(), "--help") != words.end() ||
-      std::find(words.begin(), words.end(), "-h") != words.end()) {
-    std::cout << kUsage;
-    return 0;
-  }
-  try {
-    run(parse(argc, argv), commandLine(argc, argv));
-  } catch (const UsageError &e) {
-    std::cerr << "cellgen tissue: " << e.what() << "\n" << kUsage;
-    return 2;
-  } catch (const std::exception &e) {
-    std::cerr << "cellgen tissue: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return runMain(argc, argv, "cellgen tissue", kUsage,
+                 [&] { run(parse(argc, argv), commandLine(argc, argv)); });
 }
 
 }    // namespace cellgen
