@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# accel auto against less accelerated runs (doc/fix_cell_turgor.md, doc/model.md §5.12). Coarse
+# cells (cellgen --nwall 312 --nfluid 450 scaled as bench/scaled_cell.sh does, SPH wall boundary,
+# apple wall, van 't Hoff pi) at L_P = 1e-13 m/(s Pa), R0 = 50, 75 and 100 um: each is filled to
+# turgor, then psi_ext steps to -50 kPa and the cell relaxes for TEND s of physical time with
+# 'accel auto TOL'; then with fixed accel a/2 and a/4, a the largest accel the auto run used, and
+# 4 a (too large). Printed: t50, t20 (physical time until |psi_ext - psi_cell| falls to 50 and 20 %
+# of its start), the relaxation time tau (fit of its log between 60 and 10 %), M/M0 and V at TEND,
+# each against the a/4 run. Then a drying run in air (60 C, RH 0.3, h_m 0.02 m/s) of the 75 um
+# cell with auto and with a fixed a/4: X/X0 against time. One rank per run, two runs at a time;
+# about 15 minutes on 2 free cores. `bench/accel_tolerance.sh psi` or `... air` runs one part.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+build=${CELLSPH_BUILD:-$here/../build}
+work=${WORK:-$(mktemp -d)}
+export LAMMPS_POTENTIALS=$here/../potentials
+parts=${1:-psi air}
+tol=${TOL:-0.05}
+tend=${TEND:-1000}
+source "$here/scaled_cell.sh"
+lmp() { nice "$build/bin/lmp" -in "$here/accel_tolerance.lmp" -var h "$h" -var dt "$dt" "$@"; }
+# run TAG ARGS...: one run to ts_TAG.dat, unless a finished one is there (WORK=<folder> again)
+run() {
+  local tag=$1
+  shift
+  grep -qs "Total wall time" "$tag.log" || lmp -var stage run -var tag "$tag" -log "$tag.log" "$@" >/dev/null
+}
+fill() {    # radius: cell.data and filled.restart in $work/R<radius>
+  mkdir -p "$work/R$1" && cd "$work/R$1"
+  scaled_cell 312 450 --radius "$1e-6"
+  dt=$(python3 -c "print(min(2e-8, 2*$dt))")
+  [ -f filled.restart ] || lmp -var stage fill -log fill.log >/dev/null
+}
+amax() { awk '!/^#/ { if ($6 + 0 > m + 0) m = $6 } END { printf "%.6g", m }' "$1"; }
+if [[ $parts == *psi* ]]; then
+  for r in 50 75 100; do
+    (
+      fill $r
+      run auto -var accel "auto $tol" -var tend "$tend"
+      a=$(amax ts_auto.dat)
+      for k in 2 4; do
+        run a$k -var accel "$(python3 -c "print($a/$k)")" -var tend "$tend" &
+      done
+      run big -var accel "$(python3 -c "print(4*$a)")" -var tend "$tend"
+      wait
+      echo "R0 = $r um: auto $tol, a = $a" >summary.txt
+      python3 "$here/accel_tolerance.py" relax ts_a4.dat ts_auto.dat ts_a2.dat ts_big.dat >>summary.txt
+    ) &
+    if [ $r = 75 ]; then wait; fi
+  done
+  wait
+  for r in 50 75 100; do cat "$work/R$r/summary.txt"; done
+fi
+if [[ $parts == *air* ]]; then
+  fill 75
+  run dry_auto -var drive air -var accel "auto $tol max 1e9" -var tend "${TDRY:-4}" -var every 1000
+  a=$(amax ts_dry_auto.dat)
+  run dry_a4 -var drive air -var accel "$(python3 -c "print($a/4)")" -var tend "${TDRY:-4}" -var every 1000
+  echo "drying in air, R0 = 75 um: auto $tol (largest accel $a) against fixed a/4"
+  python3 "$here/accel_tolerance.py" dry ts_dry_a4.dat ts_dry_auto.dat
+fi
+echo "(runs in $work)"
