@@ -7,8 +7,8 @@
 # 4 a (too large). Printed: t50, t20 (physical time until |psi_ext - psi_cell| falls to 50 and 20 %
 # of its start), the relaxation time tau (fit of its log between 60 and 10 %), M/M0 and V at TEND,
 # each against the a/4 run. Then a drying run in air (60 C, RH 0.3, h_m 0.39 m/s: Sh = 2 of a lone
-# cell, wall-limited) of the 75 um cell for 1.2 s with 'accel auto TOL max 1e6' (cycles of 1000 open
-# and 250 sealed transfers) and with a fixed a/4: X/X0 against time. One rank per run, two runs at a time;
+# cell, wall-limited) of the 75 um cell for 1.2 s with 'accel auto TOL max 2e4' (cycles of 100 open
+# and 25 sealed transfers) and with a fixed a/4: X/X0 against time. One rank per run, two runs at a time;
 # about 15 minutes on 2 free cores. `bench/accel_tolerance.sh psi` or `... air` runs one part.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -54,8 +54,8 @@ if [[ $parts == *psi* ]]; then
 fi
 if [[ $parts == *air* ]]; then
   fill 75
-  dry=(-var drive air -var hm 0.39 -var tend "${TDRY:-1.2}" -var every 1000)
-  run dry_auto "${dry[@]}" -var accel "auto $tol max ${DRYMAX:-1e6} every 1000 hold 250"
+  dry=(-var drive air -var hm 0.39 -var tend "${TDRY:-1.2}" -var every 100)
+  run dry_auto "${dry[@]}" -var accel "auto $tol max ${DRYMAX:-2e4} every 100 hold 25"
   a=$(amax ts_dry_auto.dat)
   run dry_a4 "${dry[@]}" -var accel "$(python3 -c "print($a/4)")"
   echo "drying in air, R0 = 75 um: auto $tol (largest accel $a) against fixed a/4"
