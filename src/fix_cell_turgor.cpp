@@ -33,12 +33,21 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-static const int RESTART_VERSION = 3;    // 3: + solids per cell; 2: begins with -version; 1: none
+// 4: + accel auto state; 3: + solids per cell; 2: begins with -version; 1: none
+static const int RESTART_VERSION = 4;
 
-// restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3)
+// restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3), the
+// accel auto cycle's sums (4: NPROBE = 10 values)
 static int restart_values(int version)
 {
-  return version >= 3 ? 6 : 5;
+  return version >= 4 ? 16 : (version >= 3 ? 6 : 5);
+}
+
+// global restart values after the number of cells: physical time, water moved (1-3), adapted
+// accel (0: not auto), open and sealed samples, lag estimate and its error (4)
+static int restart_globals(int version)
+{
+  return version >= 4 ? 7 : 2;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -51,7 +60,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
     tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
     fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
-    max_stiffness(0.0)
+    max_stiffness(0.0), accel_auto(0), accel_every(0), accel_hold(0), accel_pending(0),
+    open_samples(0), sealed_samples(0), accel_tol(0.0), accel_min(1.0), accel_max(HUGE_VAL),
+    accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -159,8 +170,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       if (rhow <= 0.0)
         error->all(FLERR, "Fix cell/turgor: water density rhow = {} must be > 0", rhow);
     } else if (key == "accel") {
-      accel = utils::numeric(FLERR, value, false, lmp);
-      if (accel <= 0.0) error->all(FLERR, "Fix cell/turgor: accel = {} must be > 0", accel);
+      used = 1 + parse_accel(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
     } else if (key == "bulk") {
       bulk = utils::numeric(FLERR, value, false, lmp);
       if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
@@ -231,16 +241,71 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                gab_xm, gab_c, gab_k);
   // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
   if (!temp_set) temp = drive == DRIVE_AIR ? air_t : Quantity{tref, "", -1};
+  if (accel_auto && drive == DRIVE_CURVE)
+    error->all(FLERR,
+               "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
+               "flux that the mechanics could delay)");
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
 
   vector_flag = 1;
-  size_vector = 7;
+  size_vector = 10;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
   comm_forward = 1;
+}
+
+/* ----------------------------------------------------------------------
+   the values after 'accel': a number, or auto tol [min a] [max a] [start a] [every n] [hold n]
+   (doc/model.md §5.12); returns how many it used
+------------------------------------------------------------------------- */
+
+int FixCellTurgor::parse_accel(int narg, char **arg, const std::string &command)
+{
+  if (narg < 1) error->all(FLERR, "{}: missing value after 'accel'", command);
+  if (strcmp(arg[0], "auto") != 0) {
+    const double value = utils::numeric(FLERR, arg[0], false, lmp);
+    if (value <= 0.0) error->all(FLERR, "{}: accel = {} must be > 0", command, value);
+    accel = value;
+    accel_auto = accel_pending = 0;
+    return 1;
+  }
+  if (narg < 2) error->all(FLERR, "{}: missing tolerance after 'accel auto'", command);
+  const double tol = utils::numeric(FLERR, arg[1], false, lmp);
+  if (!(tol > 0.0 && tol < 1.0))
+    error->all(FLERR, "{}: accel auto tolerance = {} must be in (0, 1)", command, tol);
+  double lo = 1.0, hi = HUGE_VAL, start = 0.0;
+  int every = 0, hold = 0, used = 2;
+  while (used + 1 < narg) {
+    const std::string key = arg[used];
+    if (key != "min" && key != "max" && key != "start" && key != "every" && key != "hold") break;
+    if (key == "every" || key == "hold") {
+      const int value = utils::inumeric(FLERR, arg[used + 1], false, lmp);
+      if (value < 4)
+        error->all(FLERR, "{}: accel auto {} = {} must be >= 4 transfers", command, key, value);
+      (key == "every" ? every : hold) = value;
+    } else {
+      const double value = utils::numeric(FLERR, arg[used + 1], false, lmp);
+      if (!(value > 0.0))
+        error->all(FLERR, "{}: accel auto {} = {} must be > 0", command, key, value);
+      (key == "min" ? lo : key == "max" ? hi : start) = value;
+    }
+    used += 2;
+  }
+  if (lo > hi) error->all(FLERR, "{}: accel auto min = {} must be <= max = {}", command, lo, hi);
+  if (start > 0.0 && (start < lo || start > hi))
+    error->all(FLERR, "{}: accel auto start = {} must be in [min, max] = [{}, {}]", command, start,
+               lo, hi);
+  accel_auto = accel_pending = 1;
+  accel_tol = tol;
+  accel_min = lo;
+  accel_max = hi;
+  accel_start = start;
+  accel_every = every;
+  accel_hold = hold;
+  return used;
 }
 
 /* ----------------------------------------------------------------------
@@ -330,7 +395,9 @@ void FixCellTurgor::init()
   cells->find_cells();
   cells->init();
   for (int c = 0; c < cells->ncell(); c++)
-    state.emplace(cells->id(c), CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0});
+    if (state.find(cells->id(c)) == state.end()) {
+      state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
+    }
   for (Quantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
     resolve(*in);
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
@@ -387,9 +454,19 @@ void FixCellTurgor::evaluate(bool transfer)
 {
   cells->reduce(gt0.empty() ? nullptr : gt0.data());
   const int n = cells->ncell();
-  const double dtw = accel * nevery * update->dt;
+  // accel auto: transfer j (at step j N; the next one when not transferring) is at position
+  // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
+  // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
+  const bigint every = accel_window(), hold = accel_seal();
+  const bigint j = update->ntimestep / nevery + (transfer ? 0 : 1);
+  const bigint position = accel_auto ? (j - 1) % (every + hold) : 0;
+  const bool sealed = accel_auto && position >= every;
+  const bool sample = accel_auto && transfer &&
+      2 * (sealed ? position - every : position) >= (sealed ? hold : every);
+  if (sample) (sealed ? sealed_samples : open_samples)++;
+  const double dtw = sealed ? 0.0 : accel * nevery * update->dt;
   std::vector<double> scale(n, 0.0);
-  double moved = 0.0;
+  double moved = 0.0, first_accel = HUGE_VAL;
   max_imbalance = max_stiffness = 0.0;
 
   // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
@@ -476,6 +553,8 @@ void FixCellTurgor::evaluate(bool transfer)
     if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
     if (drive != DRIVE_CURVE) check_limit(c, s, turgor, pi, pi + psi_ext);
+    if (accel_pending) first_accel = std::min(first_accel, start_accel(c, conductance, slope));
+    if (sample) sample_probe(s, position, turgor, rate, conductance, sealed);
     if (!transfer) continue;
 
     // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
@@ -490,6 +569,17 @@ void FixCellTurgor::evaluate(bool transfer)
     scale[c] = dmass / mass;
     moved += dmass;
   }
+  if (accel_pending) {
+    // the first accel of auto: from the cells' state, or 'start' (doc/model.md §5.12)
+    const double first = accel_start > 0.0 ? accel_start : first_accel;
+    const double a =
+        std::isfinite(first) ? std::min(accel_max, std::max(accel_min, first)) : accel_min;
+    max_stiffness *= a / accel;
+    accel = a;
+    accel_pending = 0;
+    // the current cycle's samples were made at another accel
+    open_samples = sealed_samples = 0;
+  }
   if (!transfer) return;
 
   // m_i <- m_i (1 + dM/M) on the cell's fluid atoms, then to the ghosts
@@ -502,6 +592,146 @@ void FixCellTurgor::evaluate(bool transfer)
 
   water_moved += moved;
   if (drive != DRIVE_CURVE) physical_time += dtw;
+  if (accel_auto && position == every + hold - 1) adapt_accel(every);
+}
+
+/* ----------------------------------------------------------------------
+   accel auto: open transfers per cycle (default 20 offset times tau, at least 8) and sealed
+   transfers after them (default 5 tau, at least 4)
+------------------------------------------------------------------------- */
+
+bigint FixCellTurgor::accel_window() const
+{
+  if (accel_every > 0) return accel_every;
+  return std::max((bigint) 8, (bigint) lround(20.0 * offset_time() / (nevery * update->dt)));
+}
+
+bigint FixCellTurgor::accel_seal() const
+{
+  if (accel_hold > 0) return accel_hold;
+  return std::max((bigint) 4, (bigint) lround(5.0 * offset_time() / (nevery * update->dt)));
+}
+
+/* ----------------------------------------------------------------------
+   accel auto: a sample of the cell's turgor at a transfer of the second half of the open window
+   (with the rate and conductance; the last one is kept) or of the sealed window
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::sample_probe(CellState &s, bigint position, double turgor, double rate,
+                                 double conductance, bool sealed)
+{
+  double *p = s.probe;
+  if (!sealed && open_samples == 1) {
+    for (int k = 0; k < NPROBE; k++) p[k] = 0.0;
+    p[Y0] = turgor;
+  }
+  const double y = turgor - p[Y0];
+  if (sealed) {
+    p[SY2] += y;
+    p[SYY2] += y * y;
+    return;
+  }
+  const double t = (double) position;
+  p[ST] += t;
+  p[SY] += y;
+  p[STT] += t * t;
+  p[STY] += t * y;
+  p[SYY] += y * y;
+  p[RATE] = rate;
+  p[COND] = conductance;
+}
+
+/* ----------------------------------------------------------------------
+   accel auto: the cell's lag e = G (P_T - P_qs) / (dM/dt) at the end of the open window and its
+   standard error: P_T from the least-squares line through the open window's samples at the seal,
+   P_qs the mean of the sealed window's second half (doc/model.md §5.12); false without enough
+   samples or flux
+------------------------------------------------------------------------- */
+
+bool FixCellTurgor::cell_lag(const CellState &s, bigint every, double &lag, double &error) const
+{
+  const double *p = s.probe;
+  const double n = open_samples, m = sealed_samples;
+  if (n < 3 || m < 2 || p[RATE] == 0.0) return false;
+  const double dtt = p[STT] - p[ST] * p[ST] / n;
+  const double dty = p[STY] - p[ST] * p[SY] / n;
+  const double dyy = p[SYY] - p[SY] * p[SY] / n;
+  if (!(dtt > 0.0)) return false;
+  const double slope = dty / dtt, tbar = p[ST] / n, at = (double) every - tbar;
+  // P_T at the seal (t = every) on the line, variance s^2 (1/n + (t - tbar)^2 / Stt)
+  const double open = p[SY] / n + slope * at;
+  const double vopen = std::max(0.0, dyy - slope * dty) / (n - 2.0) * (1.0 / n + at * at / dtt);
+  // P_qs = the sealed mean, variance s^2 / m
+  const double sealed = p[SY2] / m;
+  const double vsealed = std::max(0.0, p[SYY2] - p[SY2] * p[SY2] / m) / ((m - 1.0) * m);
+  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value
+  lag = p[COND] * (open - sealed) / p[RATE];
+  error = p[COND] * sqrt(vopen + vsealed) / fabs(p[RATE]);
+  return std::isfinite(lag) && std::isfinite(error);
+}
+
+/* ----------------------------------------------------------------------
+   accel auto, the first accel of a cell: a = tol tau_w / tau_m with the water relaxation time
+   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the offset
+   time tau, the one mechanical time known before the run; the window then measures the lag
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::start_accel(int c, double conductance, double slope) const
+{
+  const double fluid = kfluid + cells->sph_turgor(c);
+  double eps = fluid;
+  const double gt = cells->mean_gt0(c), area0 = cells->ref_area(c);
+  if (!gt0.empty() && gt > 0.0 && area0 > 0.0) {
+    const double r0 = sqrt(area0 / (4.0 * MY_PI));
+    const double lam = sqrt(cells->area(c) / area0);
+    // eps = V dP/dV = (2 G t0 / 3 R0)(7 lam^-7 - lam^-1) of the thin Neo-Hookean sphere (§6)
+    const double wall = std::max(0.0, 2.0 * gt / (3.0 * r0) * (7.0 * pow(lam, -7.0) - 1.0 / lam));
+    // in series with the fluid: 1/eps = 1/eps_wall + 1/(K + P)
+    eps = wall * fluid / (wall + fluid);
+  }
+  // 1/tau_w = G (eps/M + slope), dP/dM = eps/M for a cell full of fluid
+  const double relax = conductance * (eps / cells->mass(c) + slope);
+  return relax > 0.0 ? accel_tol / (relax * offset_time()) : HUGE_VAL;
+}
+
+/* ----------------------------------------------------------------------
+   accel auto, at the end of a cycle: accel changes only when a cell's lag e is outside the
+   tolerance by more than twice its standard error (e - 2 se > tol: down to tol/e; e + 2 se < tol:
+   up to tol/(e + 2 se)), by at most x2 or /2, the most restrictive cell deciding, within
+   [min, max] (doc/model.md §5.12)
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::adapt_accel(bigint every)
+{
+  double factor = cells->ncell() > 0 ? 2.0 : 1.0;
+  bool first = true;
+  for (int c = 0; c < cells->ncell(); c++) {
+    const CellState &s = state[cells->id(c)];
+    double e, se, f = 1.0;
+    if (cell_lag(s, every, e, se)) {
+      if (e - 2.0 * se > accel_tol)
+        f = std::max(0.5, accel_tol / e);
+      else if (e + 2.0 * se < accel_tol)
+        f = e + 2.0 * se > 0.0 ? std::min(2.0, accel_tol / (e + 2.0 * se)) : 2.0;
+      if (first || e > lag_estimate) {
+        lag_estimate = e;
+        lag_error = se;
+        first = false;
+      }
+    }
+    factor = std::min(factor, f);
+  }
+  accel = std::min(accel_max, std::max(accel_min, accel * factor));
+  open_samples = sealed_samples = 0;
+}
+
+/* ----------------------------------------------------------------------
+   MD time of the running mean of the offset D: tau, default 100 N dt
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::offset_time() const
+{
+  return tau > 0.0 ? tau : 100.0 * nevery * update->dt;
 }
 
 /* ----------------------------------------------------------------------
@@ -544,7 +774,7 @@ double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
   s.turgor = psph;
   if (!cells->wall_measure()) return psph;
   const double gap = psph - cells->wall_turgor(c);
-  const double window = tau > 0.0 ? tau : 100.0 * nevery * update->dt;
+  const double window = offset_time();
   // offset <- offset + (N dt / tau) (P_SPH - P_W - offset), from 0: an exponential running mean
   if (advance) s.offset += std::min(1.0, nevery * update->dt / window) * (gap - s.offset);
   s.turgor = psph - s.offset;
@@ -632,14 +862,15 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 /* ----------------------------------------------------------------------
    1 water moved into the cells (kg), 2 physical time (s), 3 cells, 4 max |psi_ext - psi_cell| (Pa),
-   5 max dtw k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s)
+   5 max dtw k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s),
+   8 accel, 9 lag e of the last accel auto window (max over cells), 10 its standard error
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved,   physical_time, (double) cells->ncell(),
-                           max_imbalance, max_stiffness, temperature,
-                           mass_transfer};
+  const double values[] = {water_moved,   physical_time, (double) cells->ncell(), max_imbalance,
+                           max_stiffness, temperature,   mass_transfer,           accel,
+                           lag_estimate,  lag_error};
   return values[n];
 }
 
@@ -657,6 +888,12 @@ int FixCellTurgor::modify_param(int narg, char **arg)
                "keyword of every fix)",
                key);
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
+  if (key == "accel") {
+    const int used = 1 + parse_accel(narg - 1, &arg[1], "Fix_modify cell/turgor");
+    if (accel_auto && drive == DRIVE_CURVE)
+      error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
+    return used;
+  }
   const double value = key == "psi" ? 0.0 : utils::numeric(FLERR, arg[1], false, lmp);
   if (key == "LP") {
     if (value < 0.0)
@@ -668,9 +905,6 @@ int FixCellTurgor::modify_param(int narg, char **arg)
                  drive == DRIVE_AIR ? "air" : "curve");
     parse_quantity(psi, arg[1]);
     resolve(psi);
-  } else {
-    if (value <= 0.0) error->all(FLERR, "Fix_modify cell/turgor: accel = {} must be > 0", value);
-    accel = value;
   }
   return 2;
 }
@@ -681,8 +915,15 @@ void FixCellTurgor::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   // version 1 (no marker) began with the number of cells >= 0; later versions with -version
-  std::vector<double> list = {(double) -RESTART_VERSION, (double) state.size(), physical_time,
-                              water_moved};
+  std::vector<double> list = {(double) -RESTART_VERSION,
+                              (double) state.size(),
+                              physical_time,
+                              water_moved,
+                              accel_auto ? accel : 0.0,
+                              (double) open_samples,
+                              (double) sealed_samples,
+                              lag_estimate,
+                              lag_error};
   for (const auto &kv : state) {
     list.push_back((double) kv.first);
     list.push_back(kv.second.mass0);
@@ -690,6 +931,7 @@ void FixCellTurgor::write_restart(FILE *fp)
     list.push_back(kv.second.warned);
     list.push_back(kv.second.offset);
     list.push_back(kv.second.solids);
+    list.insert(list.end(), kv.second.probe, kv.second.probe + NPROBE);
   }
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -713,11 +955,21 @@ void FixCellTurgor::restart(char *buf)
   const int n = (int) count;
   physical_time = list[1];
   water_moved = list[2];
+  // accel auto continues from the adapted accel and its window when the file has them (4)
+  const bool adapted = version >= 4 && list[3] > 0.0 && accel_auto;
+  if (adapted) {
+    accel = std::min(accel_max, std::max(accel_min, list[3]));
+    accel_pending = 0;
+    open_samples = (int) list[4];
+    sealed_samples = (int) list[5];
+    lag_estimate = list[6];
+    lag_error = list[7];
+  }
   state.clear();
   bool other_pi0 = false, other_solids = false;
   const int nvalues = restart_values(version);
   for (int k = 0; k < n; k++) {
-    const double *v = &list[3 + nvalues * k];
+    const double *v = &list[1 + restart_globals(version) + nvalues * k];
     // version 1 files written before the offset was stored had 4 values per cell: caught here
     if (!(v[0] >= 1.0 && v[0] == floor(v[0]) && (v[3] == 0.0 || v[3] == 1.0)))
       error->all(FLERR,
@@ -726,7 +978,9 @@ void FixCellTurgor::restart(char *buf)
                  version, k + 1, n, v[0], v[3]);
     // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
     const double solids = version >= 3 ? v[5] : 0.0;
-    state[(tagint) v[0]] = CellState{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0};
+    CellState cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
+    if (adapted) std::copy(v + 6, v + 6 + NPROBE, cell.probe);
+    state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;
     other_solids = other_solids ||
         (solids > 0.0 && solids_fraction > 0.0 &&

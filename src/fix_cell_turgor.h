@@ -58,7 +58,12 @@ class FixCellTurgor : public Fix {
     double solids;               // dry solids S (kg), 0 without 'solids'
     double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
     double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
+    double probe[10];            // accel auto: the cycle's sums (enum Probe)
   };
+  // accel auto, per cell: P_T shifted by its first sample, sums over the open window's samples
+  // (t = position, y = P_T), the rate and conductance of its last transfer, sums over the sealed
+  // window's samples
+  enum Probe { Y0, ST, SY, STT, STY, SYY, RATE, COND, SY2, SYY2, NPROBE };
   // a number, or an equal-style variable v_name evaluated at every transfer
   struct Quantity {
     double value;
@@ -88,7 +93,23 @@ class FixCellTurgor : public Fix {
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
 
+  // accel auto: tolerance, floor, ceiling, start (0: from the cell's state), transfers per
+  // adaptation; pending: accel still to be set from the cells' state at the next evaluation
+  int accel_auto, accel_every, accel_hold, accel_pending;
+  int open_samples, sealed_samples;    // of the current cycle
+  double accel_tol, accel_min, accel_max, accel_start;
+  double lag_estimate, lag_error;    // of the last adaptation window
+
   void evaluate(bool transfer);
+  int parse_accel(int narg, char **arg, const std::string &command);
+  double start_accel(int c, double conductance, double slope) const;
+  bigint accel_window() const;
+  bigint accel_seal() const;
+  void sample_probe(CellState &s, bigint position, double turgor, double rate, double conductance,
+                    bool sealed);
+  bool cell_lag(const CellState &s, bigint every, double &lag, double &error) const;
+  void adapt_accel(bigint every);
+  double offset_time() const;
   void check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();

@@ -14,7 +14,8 @@ writes it (int length, name, NUL) followed by the marker -version (src/*.cpp RES
 an int for pair cell/sph, a double for pair cell/wall, bonds cell/neohookean and cell/lamella and
 dihedral cell/bending, a double after
 the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
-then. A fix cell/turgor payload of version 3 (6 values per cell) loses its dry solids (the 6th)
+then. A fix cell/turgor payload of version 4 (4 more global values: accel auto state; 16 values
+per cell) or 3 (6 per cell) loses what came after version 2 (the accel auto state, the dry solids)
 when made unversioned or older, so that it has the layout of versions 1 and 2 (5 per cell).
 """
 import struct
@@ -44,17 +45,19 @@ def find_marker(data, style):
     return hits[0]
 
 
-def turgor_to_version2(data, at):
-    """Drop the 6th value per cell (dry solids) of the version-3 cell/turgor payload whose marker
-    is at offset at: count, physical time, water moved, then ID mass0 pi0 warned offset solids."""
+def turgor_to_version2(data, at, version):
+    """Keep the version-2 values of the version-3 or -4 cell/turgor payload whose marker is at
+    offset at: count, physical time, water moved [, accel, open and sealed samples, lag, its error
+    (4)], then per cell ID mass0 pi0 warned offset [solids (3, 4) and 10 accel auto sums (4)]."""
     (count,) = struct.unpack_from("=d", data, at + 8)
     n = int(count)
-    cells = at + 8 * 4
-    values = list(struct.unpack_from(f"={6 * n}d", data, cells))
-    kept = [v for k, v in enumerate(values) if k % 6 != 5]
-    data[cells:cells + 8 * 6 * n] = struct.pack(f"={5 * n}d", *kept)
+    extra, per = (5, 16) if version == 4 else (0, 6)
+    end = at + 8 * (4 + extra + per * n)
+    values = list(struct.unpack_from(f"={per * n}d", data, at + 8 * (4 + extra)))
+    kept = [v for k, v in enumerate(values) if k % per < 5]
+    data[at + 8 * 4:end] = struct.pack(f"={5 * n}d", *kept)
     (size,) = struct.unpack_from("=i", data, at - 4)
-    struct.pack_into("=i", data, at - 4, size - 8 * n)
+    struct.pack_into("=i", data, at - 4, size - 8 * (extra + (per - 5) * n))
     struct.pack_into("=d", data, at, -2.0)
 
 
@@ -70,8 +73,8 @@ def main():
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
         version = int(round(-marker))
-        if style == "cell/turgor" and mode != "newer" and version == 3:
-            turgor_to_version2(data, at)
+        if style == "cell/turgor" and mode != "newer" and version in (3, 4):
+            turgor_to_version2(data, at, version)
         if mode == "older":
             print(f"restart_version.py: {style} payload version {version} -> 2")
         elif mode == "newer":
