@@ -38,7 +38,7 @@ static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
 // per-atom h: the neighbour cutoff allows h up to HCAP x the pair_coeff h (unless a cutoff is given)
 static const double HCAP = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
-static const double HTOL = 1e-9;
+static const double HTOL = 1e-12;
 static const int HITER = 50;
 // h adaptive with the wall boundary: exact evaluations of the boundary at the first step of a run
 // whose h had no value yet (h starts from the pair_coeff value)
@@ -55,17 +55,16 @@ static const int REFRESH = 20;
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
-    Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED),
-    eta(0.0), rho0(nullptr),
-    bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr), invrho0(nullptr),
-    eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1),
-    ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr), dhdef(nullptr),
-    dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), wallload(nullptr),
-    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr),
-    xbase(nullptr), slot(nullptr), refreshing(1), refreshed(-1), commode(COMM_DENSITY),
-    restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
-    pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
+    Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
+    rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr),
+    invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1),
+    ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
+    dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), gamma_min(0.25),
+    phidq(0.0), deficit(nullptr), wallload(nullptr), tricount(nullptr), trifirst(nullptr),
+    edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr), slot(nullptr), refreshing(1),
+    refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
+    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairmu(nullptr),
+    maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   writedata = 1;
@@ -179,12 +178,12 @@ void PairCellSPH::compute(int eflag, int vflag)
 void PairCellSPH::density_pass(int first)
 {
   typedef void (PairCellSPH::*Loop)(int);
-#define CELLSPH_DENSITY(V, W, P)                                                                   \
-  {                                                                                                \
-    &PairCellSPH::sum_density<CellKernel::WENDLAND, V, W, P>,                                      \
-        &PairCellSPH::sum_density<CellKernel::CUBIC, V, W, P>,                                     \
-        &PairCellSPH::sum_density<CellKernel::QUINTIC, V, W, P>,                                   \
-        &PairCellSPH::sum_density<CellKernel::LUCY, V, W, P>                                       \
+#define CELLSPH_DENSITY(V, W, P)                                 \
+  {                                                              \
+    &PairCellSPH::sum_density<CellKernel::WENDLAND, V, W, P>,    \
+        &PairCellSPH::sum_density<CellKernel::CUBIC, V, W, P>,   \
+        &PairCellSPH::sum_density<CellKernel::QUINTIC, V, W, P>, \
+        &PairCellSPH::sum_density<CellKernel::LUCY, V, W, P>     \
   }
   static const Loop DENSITY[2][2][2][CellKernel::NTYPES] = {
       {{CELLSPH_DENSITY(0, 0, 0), CELLSPH_DENSITY(0, 0, 1)},
@@ -265,8 +264,8 @@ void PairCellSPH::too_long(int i) const
              "{} {} on step {}, beyond the {:.4g} m ({:.3g} x) that the neighbour cutoff allows: "
              "give pair_style cell/sph a cutoff of at least {:.4g} m ({} h)",
              atom->tag[i], atom->molecule ? atom->molecule[i] : 0, hi, hi / h[t][t], t, t,
-             update->ntimestep, hcap[t], hcap[t] / h[t][t],
-             1.1 * hi * CellKernel::support(kernel), CellKernel::support(kernel));
+             update->ntimestep, hcap[t], hcap[t] / h[t][t], 1.1 * hi * CellKernel::support(kernel),
+             CellKernel::support(kernel));
 }
 
 /* ----------------------------------------------------------------------
@@ -1027,8 +1026,8 @@ template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
       const double delz = ztmp - x[j][2];
       // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4); per-atom h:
       // -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i W(h_j))
-      const double fpress =
-          PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j]) : -pairdw[k] * (prho2i + prho2[j]);
+      const double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
+                                    : -pairdw[k] * (prho2i + prho2[j]);
       double fx = delx * fpress;
       double fy = dely * fpress;
       double fz = delz * fpress;
@@ -1364,8 +1363,8 @@ double PairCellSPH::init_one(int i, int j)
                h[i][j]);
 
   // per-atom h: every pair within the support of the largest h allowed
-  const double reach = hmode == HFIXED ? support
-                                       : CellKernel::support(kernel) * std::max(hcap[i], hcap[j]);
+  const double reach =
+      hmode == HFIXED ? support : CellKernel::support(kernel) * std::max(hcap[i], hcap[j]);
   pc[i][j].cutsq = reach * reach;
   pc[i][j].scale = CellKernel::scale(kernel, dim, h[i][j]);
   pc[i][j].mu2 = 2.0 * mu[i][j];
@@ -1517,8 +1516,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
     const double r = sqrt(rsq), support = CellKernel::support(kernel);
     for (int k : {i, j})
       if (r < support * hv[k])
-        fforce -= atom->rmass[i] * atom->rmass[j] * pressure[k] /
-            (omega[k] * rho[k] * rho[k]) *
+        fforce -= atom->rmass[i] * atom->rmass[j] * pressure[k] / (omega[k] * rho[k] * rho[k]) *
             CellKernel::dWr(kernel, CellKernel::scale(kernel, domain->dimension, hv[k]), r);
     return 0.0;
   }

@@ -73,12 +73,12 @@ class PairCellSPH : public Pair {
   // per-atom h (h mass, h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
   // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
   int ih, iomega;
-  double *hcap;        // largest h the neighbour cutoff allows, per fluid type
-  double **hscale;     // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2) of owned and ghost atoms
-  double *dsum;        // d(sum_j m_j W(r_ij, h_i))/dh_i
-  double *dhdef;       // wall boundary: d(1 - gamma_i)/dh_i
-  double *dhdef0;      // the same at the last exact evaluation (partial sums per rank)
-  double *hbase;       // h at the last exact evaluation
+  double *hcap;                // largest h the neighbour cutoff allows, per fluid type
+  double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2) of owned and ghost atoms
+  double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
+  double *dhdef;               // wall boundary: d(1 - gamma_i)/dh_i
+  double *dhdef0;              // the same at the last exact evaluation (partial sums per rank)
+  double *hbase;               // h at the last exact evaluation
   std::vector<double> step;    // Newton step of h of the list's atoms
 
   // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
@@ -127,11 +127,11 @@ class PairCellSPH : public Pair {
   int nmax;
 
   // pairs inside the kernel support, found by the density pass and reused by the force pass
-  int *pairfirst;    // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
-  int *pairj;        // neighbour index j
-  double *pairdw;    // m_i m_j (1/r) dW/dr (per-atom h: at h_i)
-  double *pairdwj;   // per-atom h: m_i m_j (1/r) dW/dr at h_j
-  double *pairmu;    // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
+  int *pairfirst;     // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
+  int *pairj;         // neighbour index j
+  double *pairdw;     // m_i m_j (1/r) dW/dr (per-atom h: at h_i)
+  double *pairdwj;    // per-atom h: m_i m_j (1/r) dW/dr at h_j
+  double *pairmu;     // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
   int maxfirst, maxpairs;
 
   void allocate();
