@@ -29,9 +29,12 @@ run() {    # name bnd f nwall nfluid [cellgen options]; $hmode: the smoothing le
   local dx gap h dt ws
   scaled_cell "$nwall" "$nfluid" "$@"
   if [ "$bnd" = 0 ]; then h=12.2e-6 dt=1e-8; fi    # the old model as calibrated (apple.cellsph)
+  # per-atom h grows with the water from the lattice's h: the neighbour cutoff for h up to hcap h
+  local hcap=1.3
+  if [ "${f%.*}" -ge 2 ]; then hcap=1.5; fi
   local t0=$SECONDS
   mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
-    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -var hmode "$hmode" -log log.lammps | grep RESULT
+    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -var hmode "$hmode" -var hcap "$hcap" -log log.lammps | grep RESULT
   python3 "$here/pressure_shells.py" profile.txt "$name" | tail -1
   echo "  ($((SECONDS - t0)) s, DX $dx, gap $gap)"
 }

@@ -40,6 +40,9 @@ static const double HCAP = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-12;
 static const int HITER = 50;
+// h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger h,
+// so that the iterations sum over those pairs only while every h changed by less than HMARGIN
+static const double HMARGIN = 1e-3;
 // h adaptive with the wall boundary: exact evaluations of the boundary at the first step of a run
 // whose h had no value yet (h starts from the pair_coeff value)
 static const int HSTART = 4;
@@ -56,15 +59,15 @@ static const int REFRESH = 20;
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
-    rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr),
+    hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr),
     invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1),
     ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
     dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), gamma_min(0.25),
     phidq(0.0), deficit(nullptr), wallload(nullptr), tricount(nullptr), trifirst(nullptr),
     edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr), slot(nullptr), refreshing(1),
     refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
-    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairmu(nullptr),
-    maxfirst(0), maxpairs(0)
+    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
+    pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   writedata = 1;
@@ -82,6 +85,7 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairj);
   memory->destroy(pairdw);
   memory->destroy(pairdwj);
+  memory->destroy(pairr);
   memory->destroy(pairmu);
   if (allocated) {
     memory->destroy(boundary);
@@ -191,7 +195,22 @@ void PairCellSPH::density_pass(int first)
       {{CELLSPH_DENSITY(0, 1, 0), CELLSPH_DENSITY(0, 1, 1)},
        {CELLSPH_DENSITY(1, 1, 0), CELLSPH_DENSITY(1, 1, 1)}}};
 #undef CELLSPH_DENSITY
-  (this->*DENSITY[walls][viscous][hmode != HFIXED][kernel])(first);
+  typedef void (PairCellSPH::*Resum)();
+#define CELLSPH_RESUM(V)                                     \
+  {                                                          \
+    &PairCellSPH::resum_density<CellKernel::WENDLAND, V>,    \
+        &PairCellSPH::resum_density<CellKernel::CUBIC, V>,   \
+        &PairCellSPH::resum_density<CellKernel::QUINTIC, V>, \
+        &PairCellSPH::resum_density<CellKernel::LUCY, V>     \
+  }
+  static const Resum RESUM[2][CellKernel::NTYPES] = {CELLSPH_RESUM(0), CELLSPH_RESUM(1)};
+#undef CELLSPH_RESUM
+  if (!first && hdrift < HMARGIN) {
+    (this->*RESUM[viscous][kernel])();
+  } else {
+    (this->*DENSITY[walls][viscous][hmode != HFIXED][kernel])(first);
+    hdrift = 0.0;
+  }
   if (walls && first) {
     if (refreshing) merge_terms();
     contacts.clear();
@@ -245,8 +264,10 @@ void PairCellSPH::kernel_scales()
       hscale[i][0] = sc.invh;
       hscale[i][1] = sc.w;
       hscale[i][2] = sc.dw;
+      const double range = CellKernel::support(kernel) * (1.0 + HMARGIN) * hv[i];
+      hscale[i][3] = range * range;
     } else {
-      hscale[i][0] = hscale[i][1] = hscale[i][2] = 0.0;
+      hscale[i][0] = hscale[i][1] = hscale[i][2] = hscale[i][3] = 0.0;
     }
   }
 }
@@ -276,7 +297,9 @@ void PairCellSPH::too_long(int i) const
 void PairCellSPH::solve_h()
 {
   for (int iter = 0;; iter++) {
-    if (newton_h() < HTOL) return;
+    const double change = newton_h();
+    if (change < HTOL) return;
+    hdrift += change;
     if (iter == HITER)
       error->all(FLERR,
                  "Pair cell/sph: h adaptive did not converge in {} Newton iterations on step {}",
@@ -383,7 +406,7 @@ void PairCellSPH::grow_peratom()
   memory->create(prho2, nmax, "pair:prho2");
   memory->create(rhoinv, nmax, "pair:rhoinv");
   if (hmode != HFIXED) {
-    memory->create(hscale, nmax, 3, "pair:hscale");
+    memory->create(hscale, nmax, 4, "pair:hscale");
     memory->create(dsum, nmax, "pair:dsum");
     if (walls) {
       memory->create(dhdef, nmax, "pair:dhdef");
@@ -417,7 +440,6 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const double support = CellKernel::support(KERNEL);
   const double dim = domain->dimension;
   const double w0 = CellKernel::shape<KERNEL>(0.0);
 
@@ -476,7 +498,6 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     if (npairs + jnum > maxpairs) grow_pairs(npairs + jnum);
     int *pj = pairj;
     double *pdw = pairdw;
-    double *pdwj = pairdwj;
     double *pmu = pairmu;
     pairfirst[ii] = npairs;
     double rhoi = 0.0, dsumi = 0.0;
@@ -490,35 +511,18 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= p.cutsq) continue;
 
-      const double r = sqrt(rsq);
-      const double mj = rmass[j];
       if (PERATOM) {
-        const double qi = r * hscale[i][0], qj = r * hscale[j][0];
-        if (qi >= support && qj >= support) continue;
-        double dwi = 0.0, dwj = 0.0;
-        if (qi < support) {
-          // rho_i += m_j W(r, h_i); dW/dh = -(d W + r dW/dr) / h (doc/pair_cell_sph.md)
-          const double f = CellKernel::shape<KERNEL>(qi), g = CellKernel::slope<KERNEL>(qi);
-          rhoi += mj * hscale[i][1] * f;
-          dsumi -= mj * hscale[i][1] * hscale[i][0] * (dim * f + qi * qi * g);
-          dwi = hscale[i][2] * g;
-        }
-        if (qj < support) {
-          const double f = CellKernel::shape<KERNEL>(qj), g = CellKernel::slope<KERNEL>(qj);
-          if (newton_pair || j < nlocal) {
-            rho[j] += mi * hscale[j][1] * f;
-            dsum[j] -= mi * hscale[j][1] * hscale[j][0] * (dim * f + qj * qj * g);
-          }
-          dwj = hscale[j][2] * g;
-        }
+        // the pairs within (1 + HMARGIN) x the support of h_i or h_j
+        if (rsq >= hscale[i][3] && rsq >= hscale[j][3]) continue;
+        const double r = sqrt(rsq);
+        pairr[npairs] = r;
         pj[npairs] = j;
-        pdw[npairs] = mi * mj * dwi;
-        pdwj[npairs] = mi * mj * dwj;
-        // viscosity with the mean of the two kernels' gradients (doc/pair_cell_sph.md)
-        if (VISCOUS) pmu[npairs] = 0.5 * p.mu2 * (pdw[npairs] + pdwj[npairs]);
+        peratom_pair<KERNEL, VISCOUS>(i, j, r, p.mu2, npairs, rhoi, dsumi);
         npairs++;
         continue;
       }
+      const double r = sqrt(rsq);
+      const double mj = rmass[j];
       // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2)
       const double w = CellKernel::W<KERNEL>(p.scale, r);
       rhoi += mj * w;
@@ -547,6 +551,74 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     }
 }
 
+/* ----------------------------------------------------------------------
+   per-atom h: pair k (i, j at distance r) into rho_i (here rhoi, dsumi), rho_j and dS/dh, and the
+   pair's kernel gradients at h_i and h_j (zero outside each support)
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int VISCOUS>
+inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k, double &rhoi,
+                                      double &dsumi)
+{
+  const double support = CellKernel::support(KERNEL);
+  const double dim = domain->dimension;
+  const double mi = atom->rmass[i], mj = atom->rmass[j];
+  const double qi = r * hscale[i][0], qj = r * hscale[j][0];
+  double dwi = 0.0, dwj = 0.0;
+  if (qi < support) {
+    // rho_i += m_j W(r, h_i); dW/dh = -(d W + r dW/dr) / h (doc/pair_cell_sph.md)
+    const double f = CellKernel::shape<KERNEL>(qi), g = CellKernel::slope<KERNEL>(qi);
+    rhoi += mj * hscale[i][1] * f;
+    dsumi -= mj * hscale[i][1] * hscale[i][0] * (dim * f + qi * qi * g);
+    dwi = hscale[i][2] * g;
+  }
+  if (qj < support) {
+    const double f = CellKernel::shape<KERNEL>(qj), g = CellKernel::slope<KERNEL>(qj);
+    if (force->newton_pair || j < atom->nlocal) {
+      atom->dvector[irho][j] += mi * hscale[j][1] * f;
+      dsum[j] -= mi * hscale[j][1] * hscale[j][0] * (dim * f + qj * qj * g);
+    }
+    dwj = hscale[j][2] * g;
+  }
+  pairdw[k] = mi * mj * dwi;
+  pairdwj[k] = mi * mj * dwj;
+  // viscosity with the mean of the two kernels' gradients (doc/pair_cell_sph.md)
+  if (VISCOUS) pairmu[k] = 0.5 * mu2 * (pairdw[k] + pairdwj[k]);
+}
+
+/* ----------------------------------------------------------------------
+   h adaptive, an iteration while every h changed by less than HMARGIN since the last density
+   pass: the sums over that pass's pairs, at the new h
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int VISCOUS> void PairCellSPH::resum_density()
+{
+  double *rho = atom->dvector[irho];
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const double dim = domain->dimension;
+  const double w0 = CellKernel::shape<KERNEL>(0.0);
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    rho[i] = rmass[i] * w0 * hscale[i][1];
+    dsum[i] = -dim * rho[i] * hscale[i][0];
+  }
+  if (force->newton_pair)
+    for (int i = nlocal; i < nlocal + atom->nghost; i++) rho[i] = dsum[i] = 0.0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const PairConst *pci = pc[type[i]];
+    double rhoi = 0.0, dsumi = 0.0;
+    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++)
+      peratom_pair<KERNEL, VISCOUS>(i, pairj[k], pairr[k], pci[type[pairj[k]]].mu2, k, rhoi, dsumi);
+    rho[i] += rhoi;
+    dsum[i] += dsumi;
+  }
+}
+
 /* ---------------------------------------------------------------------- */
 
 void PairCellSPH::grow_pairs(int n)
@@ -554,7 +626,10 @@ void PairCellSPH::grow_pairs(int n)
   maxpairs = n + n / 2;
   memory->grow(pairj, maxpairs, "pair:pairj");
   memory->grow(pairdw, maxpairs, "pair:pairdw");
-  if (hmode != HFIXED) memory->grow(pairdwj, maxpairs, "pair:pairdwj");
+  if (hmode != HFIXED) {
+    memory->grow(pairdwj, maxpairs, "pair:pairdwj");
+    memory->grow(pairr, maxpairs, "pair:pairr");
+  }
   memory->grow(pairmu, maxpairs, "pair:pairmu");
 }
 

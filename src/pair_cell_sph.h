@@ -50,6 +50,7 @@ class PairCellSPH : public Pair {
   double cut_global;    // neighbour cutoff from pair_style; 0 = the kernel support
   int hmode;            // HFIXED, HMASS or HADAPTIVE (pair_style keyword h)
   double eta;           // h = eta (m/rho0)^(1/3) or eta (m/rho)^(1/3) per atom
+  double hdrift;        // h adaptive: largest relative change of h since the last density pass
 
   double **rho0, **bulk, **mu, **h;    // pair_coeff values per type pair
 
@@ -74,7 +75,7 @@ class PairCellSPH : public Pair {
   // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
   int ih, iomega;
   double *hcap;                // largest h the neighbour cutoff allows, per fluid type
-  double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2) of owned and ghost atoms
+  double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
   double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
   double *dhdef;               // wall boundary: d(1 - gamma_i)/dh_i
   double *dhdef0;              // the same at the last exact evaluation (partial sums per rank)
@@ -131,6 +132,7 @@ class PairCellSPH : public Pair {
   int *pairj;         // neighbour index j
   double *pairdw;     // m_i m_j (1/r) dW/dr (per-atom h: at h_i)
   double *pairdwj;    // per-atom h: m_i m_j (1/r) dW/dr at h_j
+  double *pairr;      // per-atom h: r_ij
   double *pairmu;     // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
   int maxfirst, maxpairs;
 
@@ -140,6 +142,9 @@ class PairCellSPH : public Pair {
   void unstable(int) const;
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
   template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
+  template <int KERNEL, int VISCOUS>
+  void peratom_pair(int, int, double, double, int, double &, double &);
+  template <int KERNEL, int VISCOUS> void resum_density();
   void density_pass(int);
   void atom_h(int &);
   void kernel_scales();
