@@ -38,7 +38,7 @@ static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
 // per-atom h: the neighbour cutoff allows h up to HCAP x the pair_coeff h (unless a cutoff is given)
 static const double HCAP = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
-static const double HTOL = 1e-12;
+static const double HTOL = 1e-10;
 static const int HITER = 50;
 // h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger h,
 // so that the iterations sum over those pairs only while every h changed by less than HMARGIN
