@@ -661,14 +661,14 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
     phi_beyond(q, ph, dph);
     // D_T = Phi(|g|/h) Omega_T / (4 pi), Omega_T the solid angle of T seen from f (exact: a point
     // formula (g . S_T)/|g|^3 would err by 1e-3 in gamma, 2 % in pressure); 1 - gamma_f = sum_T D_T
-    double omega, dom[3][3];
-    CellTriangle::solid_angle(ra, rb, rc, omega, dom);
-    deficit[f] += ph * omega / (4.0 * M_PI);
+    double solid, dom[3][3];
+    CellTriangle::solid_angle(ra, rb, rc, solid, dom);
+    deficit[f] += ph * solid / (4.0 * M_PI);
     // per-atom h: dD_T/dh = -Phi'(q) q Omega_T / (4 pi h)
-    if (PERATOM) dhdef[f] -= dph * q * invh * omega / (4.0 * M_PI);
+    if (PERATOM) dhdef[f] -= dph * q * invh * solid / (4.0 * M_PI);
     // dD_T/dx_v = Phi'(q) Omega g / (12 pi h |g|) + Phi / (4 pi) dOmega/dx_v (d|g|/dx_v = g / 3|g|),
     // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
-    const double cg = dph * omega * invh / (12.0 * M_PI * gl);
+    const double cg = dph * solid * invh / (12.0 * M_PI * gl);
     const double co = ph / (4.0 * M_PI);
     for (int v = 0; v < 3; v++) {
       Term tm{f, v == 0 ? a : v == 1 ? b : c, {}};
