@@ -9,7 +9,8 @@
 #   bash bench/cell_model_speed.sh [nsteps=5000] [repeats=3] [models="particles boundary"]
 #   (models also: mass adaptive boundary-h14)
 # Prints particle-steps per second per core of the timed run (best of the repeats). Environment:
-# CELLSPH_BUILD (build folder), MPIEXEC (default mpirun), OUT (work folder).
+# CELLSPH_BUILD (build folder), MPIEXEC (default mpirun), OUT (work folder), NPS (rank counts,
+# default "1 2").
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -33,7 +34,7 @@ echo
 echo "wall-fluid model: $model"
 echo "| MPI ranks | particles | steps | loop time (s), best of $repeats | particle-steps/s | per core |"
 echo "|---:|---:|---:|---:|---:|---:|"
-for np in 1 2; do
+for np in ${NPS:-1 2}; do
   best=
   for r in $(seq "$repeats"); do
     log=log.$model.np$np.$r
