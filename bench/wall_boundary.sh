@@ -11,7 +11,8 @@
 #   H. the smoothing length (boundary): fixed h, h mass and h adaptive (eta = 1.27, h/dx of the
 #      fluid lattice) at three resolutions, 1.35 x water, and at the seed resolution, 1.06 and 2.2 x
 #      (HMODES and HCASES pick a subset: HMODES=adaptive HCASES="coarse seed")
-# About 25 minutes on 2 free cores (H alone about 15); `bench/wall_boundary.sh A` runs one part.
+# About 25 minutes on 2 free cores (H alone about 40, estimated; under load 2 hours);
+# `bench/wall_boundary.sh A` runs one part.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
