@@ -8,7 +8,11 @@
 #   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
 #   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
 #   C. boundary at 1.35 x water, coarse (312 wall, 461 fluid) and fine (2562 wall, 3911 fluid)
-# About 25 minutes on 2 free cores; `bench/wall_boundary.sh A` runs one part.
+#   H. the smoothing length (boundary): fixed h, h mass and h adaptive (eta = 1.27, h/dx of the
+#      fluid lattice) at three resolutions, 1.35 x water, and at the seed resolution, 1.06 and 2.2 x
+#      (HMODES and HCASES pick a subset: HMODES=adaptive HCASES="coarse seed")
+# About 25 minutes on 2 free cores (H alone about 40, estimated; under load 2 hours);
+# `bench/wall_boundary.sh A` runs one part.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -18,16 +22,20 @@ if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_
 export LAMMPS_POTENTIALS=$here/../potentials
 parts=${1:-ABC}
 source "$here/scaled_cell.sh"
-run() {    # name bnd f nwall nfluid [cellgen options]
+hmode=fixed
+run() {    # name bnd f nwall nfluid [cellgen options]; $hmode: the smoothing length mode
   local name=$1 bnd=$2 f=$3 nwall=$4 nfluid=$5
   shift 5
   mkdir -p "$work/$name" && cd "$work/$name"
   local dx gap h dt ws
   scaled_cell "$nwall" "$nfluid" "$@"
   if [ "$bnd" = 0 ]; then h=12.2e-6 dt=1e-8; fi    # the old model as calibrated (apple.cellsph)
+  # per-atom h grows with the water from the lattice's h: the neighbour cutoff for h up to hcap h
+  local hcap=1.3
+  if [ "${f%.*}" -ge 2 ]; then hcap=1.5; fi
   local t0=$SECONDS
   mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
-    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -log log.lammps | grep RESULT
+    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -var hmode "$hmode" -var hcap "$hcap" -log log.lammps | grep RESULT
   python3 "$here/pressure_shells.py" profile.txt "$name" | tail -1
   echo "  ($((SECONDS - t0)) s, DX $dx, gap $gap)"
 }
@@ -45,4 +53,19 @@ if [[ $parts == *C* ]]; then
   echo "== C. boundary, 1.35 x water, coarse and fine"
   run coarse 1 1.35 300 450
   run fine 1 1.35 2562 3900
+fi
+if [[ $parts == *H* ]]; then
+  echo "== H. boundary: fixed h, h mass, h adaptive"
+  for hmode in ${HMODES:-fixed mass adaptive}; do
+    for case in ${HCASES:-coarse seed fine seed-1.06 seed-2.2}; do
+      case $case in
+        coarse) run "$hmode-coarse" 1 1.35 300 450 ;;
+        seed) run "$hmode-seed" 1 1.35 1091 1624 ;;
+        fine) run "$hmode-fine" 1 1.35 2562 3900 ;;
+        seed-1.06) run "$hmode-seed-1.06" 1 1.06 1091 1624 ;;
+        seed-2.2) run "$hmode-seed-2.2" 1 2.2 1091 1624 ;;
+      esac
+    done
+  done
+  hmode=fixed
 fi

@@ -30,9 +30,22 @@
 
 using namespace LAMMPS_NS;
 
-static const int RESTART_VERSION = 2;    // 2: per type pair, whether it is a wall boundary pair
+// 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta
+static const int RESTART_VERSION = 3;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
+static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
+// per-atom h: the neighbour cutoff allows h up to HCAP x the pair_coeff h (unless a cutoff is given)
+static const double HCAP = 1.5;
+// h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
+static const double HTOL = 1e-10;
+static const int HITER = 50;
+// h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger h,
+// so that the iterations sum over those pairs only while every h changed by less than HMARGIN
+static const double HMARGIN = 1e-3;
+// h adaptive with the wall boundary: exact evaluations of the boundary at the first step of a run
+// whose h had no value yet (h starts from the pair_coeff value)
+static const int HSTART = 4;
 
 // wall boundary: the triangles one wall atom keeps (it is their middle angle atom), at most
 static const int MAXTRI = 8;
@@ -45,20 +58,22 @@ static const int REFRESH = 20;
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
-    Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), rho0(nullptr),
-    bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr), invrho0(nullptr),
-    eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1),
-    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), wallload(nullptr),
-    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr),
-    xbase(nullptr), slot(nullptr), refreshing(1), refreshed(-1), commode(COMM_DENSITY),
-    restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
-    pairj(nullptr), pairdw(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
+    Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
+    hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr),
+    invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1),
+    ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
+    dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), gamma_min(0.25),
+    phidq(0.0), deficit(nullptr), wallload(nullptr), tricount(nullptr), trifirst(nullptr),
+    edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr), slot(nullptr), refreshing(1),
+    refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
+    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
+    pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   writedata = 1;
   reinitflag = 0;
-  comm_forward = 3;    // rho, pressure (and the kernel deficit); with walls: triangle tags
-  comm_reverse = 3;    // rho (and the kernel deficit); or the wall load
+  comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
+  comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load
 }
 
 /* ---------------------------------------------------------------------- */
@@ -69,6 +84,8 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairfirst);
   memory->destroy(pairj);
   memory->destroy(pairdw);
+  memory->destroy(pairdwj);
+  memory->destroy(pairr);
   memory->destroy(pairmu);
   if (allocated) {
     memory->destroy(boundary);
@@ -83,6 +100,7 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(invrho0);
     memory->destroy(eosk);
     memory->destroy(fluid);
+    memory->destroy(hcap);
   }
 }
 
@@ -92,31 +110,9 @@ void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  const bool grown = atom->nmax > nmax || (walls && !deficit);
+  const int peratom = hmode != HFIXED;
+  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum);
   if (grown) grow_peratom();
-
-  // the loops compiled for this kernel, with or without wall boundary, viscosity and tallies
-  typedef void (PairCellSPH::*Loop)();
-  static const Loop DENSITY[2][2][CellKernel::NTYPES] = {
-      {{&PairCellSPH::sum_density<CellKernel::WENDLAND, 0, 0>,
-        &PairCellSPH::sum_density<CellKernel::CUBIC, 0, 0>,
-        &PairCellSPH::sum_density<CellKernel::QUINTIC, 0, 0>,
-        &PairCellSPH::sum_density<CellKernel::LUCY, 0, 0>},
-       {&PairCellSPH::sum_density<CellKernel::WENDLAND, 1, 0>,
-        &PairCellSPH::sum_density<CellKernel::CUBIC, 1, 0>,
-        &PairCellSPH::sum_density<CellKernel::QUINTIC, 1, 0>,
-        &PairCellSPH::sum_density<CellKernel::LUCY, 1, 0>}},
-      {{&PairCellSPH::sum_density<CellKernel::WENDLAND, 0, 1>,
-        &PairCellSPH::sum_density<CellKernel::CUBIC, 0, 1>,
-        &PairCellSPH::sum_density<CellKernel::QUINTIC, 0, 1>,
-        &PairCellSPH::sum_density<CellKernel::LUCY, 0, 1>},
-       {&PairCellSPH::sum_density<CellKernel::WENDLAND, 1, 1>,
-        &PairCellSPH::sum_density<CellKernel::CUBIC, 1, 1>,
-        &PairCellSPH::sum_density<CellKernel::QUINTIC, 1, 1>,
-        &PairCellSPH::sum_density<CellKernel::LUCY, 1, 1>}}};
-  static const Loop FORCES[2][2] = {
-      {&PairCellSPH::sum_forces<0, 0>, &PairCellSPH::sum_forces<0, 1>},
-      {&PairCellSPH::sum_forces<1, 0>, &PairCellSPH::sum_forces<1, 1>}};
 
   if (walls) {
     if (neighbor->ago == 0 || grown) {
@@ -127,19 +123,27 @@ void PairCellSPH::compute(int eflag, int vflag)
         update->ntimestep < refreshed;
     if (refreshing) refreshed = update->ntimestep;
   }
-  (this->*DENSITY[walls][viscous][kernel])();
-  if (walls) {
-    if (refreshing) merge_terms();
-    contacts.clear();
-    for (const auto &t : touching) contact(t[0], t[1], t[2], t[3]);
+  // per-atom h; h adaptive starting from the pair_coeff value: the boundary evaluated exactly at
+  // the converged h again, so that its linearisation in h starts there
+  int passes = 1;
+  if (peratom) {
+    int fresh = 0, any = 0;
+    atom_h(fresh);
+    MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  commode = COMM_DENSITY;
-  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+  for (int pass = 0; pass < passes; pass++) {
+    if (pass > 0) refreshing = 1;
+    density_pass(1);
+    if (hmode == HADAPTIVE) solve_h();
+  }
   apply_eos();
+  commode = COMM_DENSITY;
   CellCompat::forward_comm(comm, this);
 
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
+  const double *omega = peratom ? atom->dvector[iomega] : nullptr;
   const int *type = atom->type;
   const int nall = atom->nlocal + atom->nghost;
   for (int i = atom->nlocal; i < nall; i++)
@@ -147,9 +151,16 @@ void PairCellSPH::compute(int eflag, int vflag)
       rhoinv[i] = 1.0 / rho[i];
       prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i];
       if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
+      if (peratom) prho2[i] /= omega[i];
     }
 
-  (this->*FORCES[viscous][evflag ? 1 : 0])();
+  typedef void (PairCellSPH::*Loop)();
+  static const Loop FORCES[2][2][2] = {
+      {{&PairCellSPH::sum_forces<0, 0, 0>, &PairCellSPH::sum_forces<0, 0, 1>},
+       {&PairCellSPH::sum_forces<0, 1, 0>, &PairCellSPH::sum_forces<0, 1, 1>}},
+      {{&PairCellSPH::sum_forces<1, 0, 0>, &PairCellSPH::sum_forces<1, 0, 1>},
+       {&PairCellSPH::sum_forces<1, 1, 0>, &PairCellSPH::sum_forces<1, 1, 1>}}};
+  (this->*FORCES[viscous][evflag ? 1 : 0][peratom])();
   if (walls) {
     if (evflag)
       wall_forces<1>();
@@ -160,6 +171,210 @@ void PairCellSPH::compute(int eflag, int vflag)
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   one density pass with the loop compiled for this kernel, with or without wall boundary,
+   viscosity and per-atom h; first = 1: the step's first pass (with the wall boundary and
+   contacts), 0: a Newton iteration of h adaptive (the sums only); then the ghost sums into owners
+------------------------------------------------------------------------- */
+
+void PairCellSPH::density_pass(int first)
+{
+  typedef void (PairCellSPH::*Loop)(int);
+#define CELLSPH_DENSITY(V, W, P)                                 \
+  {                                                              \
+    &PairCellSPH::sum_density<CellKernel::WENDLAND, V, W, P>,    \
+        &PairCellSPH::sum_density<CellKernel::CUBIC, V, W, P>,   \
+        &PairCellSPH::sum_density<CellKernel::QUINTIC, V, W, P>, \
+        &PairCellSPH::sum_density<CellKernel::LUCY, V, W, P>     \
+  }
+  static const Loop DENSITY[2][2][2][CellKernel::NTYPES] = {
+      {{CELLSPH_DENSITY(0, 0, 0), CELLSPH_DENSITY(0, 0, 1)},
+       {CELLSPH_DENSITY(1, 0, 0), CELLSPH_DENSITY(1, 0, 1)}},
+      {{CELLSPH_DENSITY(0, 1, 0), CELLSPH_DENSITY(0, 1, 1)},
+       {CELLSPH_DENSITY(1, 1, 0), CELLSPH_DENSITY(1, 1, 1)}}};
+#undef CELLSPH_DENSITY
+  typedef void (PairCellSPH::*Resum)();
+#define CELLSPH_RESUM(V)                                     \
+  {                                                          \
+    &PairCellSPH::resum_density<CellKernel::WENDLAND, V>,    \
+        &PairCellSPH::resum_density<CellKernel::CUBIC, V>,   \
+        &PairCellSPH::resum_density<CellKernel::QUINTIC, V>, \
+        &PairCellSPH::resum_density<CellKernel::LUCY, V>     \
+  }
+  static const Resum RESUM[2][CellKernel::NTYPES] = {CELLSPH_RESUM(0), CELLSPH_RESUM(1)};
+#undef CELLSPH_RESUM
+  if (!first && hdrift < HMARGIN) {
+    (this->*RESUM[viscous][kernel])();
+  } else {
+    (this->*DENSITY[walls][viscous][hmode != HFIXED][kernel])(first);
+    hdrift = 0.0;
+  }
+  if (walls && first) {
+    if (refreshing) merge_terms();
+    contacts.clear();
+    for (const auto &t : touching) contact(t[0], t[1], t[2], t[3]);
+  }
+  commode = first ? COMM_DENSITY : COMM_SUMS;
+  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom h of owned and ghost fluid atoms: h mass sets h = eta (m/rho0)^(1/d); h adaptive
+   keeps the last step's h (the start of its Newton iteration) and gives an atom without one the
+   pair_coeff h (fresh = 1 if an owned atom had none); then the kernel constants of every atom
+------------------------------------------------------------------------- */
+
+void PairCellSPH::atom_h(int &fresh)
+{
+  double *hv = atom->dvector[ih];
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const double invdim = 1.0 / domain->dimension;
+  fresh = 0;
+  for (int i = 0; i < nall; i++) {
+    const int t = type[i];
+    if (!fluid[t]) continue;
+    if (hmode == HMASS) {
+      // h_i = eta (m_i / rho0)^(1/d) (doc/pair_cell_sph.md, smoothing length)
+      hv[i] = eta * pow(rmass[i] * invrho0[t], invdim);
+      if (i < nlocal && hv[i] > hcap[t]) too_long(i);
+    } else if (!(hv[i] > 0.0)) {
+      hv[i] = h[t][t];
+      if (i < nlocal) fresh = 1;
+    }
+  }
+  kernel_scales();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellSPH::kernel_scales()
+{
+  const double *hv = atom->dvector[ih];
+  const int *type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  const int dim = domain->dimension;
+  for (int i = 0; i < nall; i++) {
+    if (fluid[type[i]]) {
+      const CellKernel::Scale sc = CellKernel::scale(kernel, dim, hv[i]);
+      hscale[i][0] = sc.invh;
+      hscale[i][1] = sc.w;
+      hscale[i][2] = sc.dw;
+      const double range = CellKernel::support(kernel) * (1.0 + HMARGIN) * hv[i];
+      hscale[i][3] = range * range;
+    } else {
+      hscale[i][0] = hscale[i][1] = hscale[i][2] = hscale[i][3] = 0.0;
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   stop when an atom's h is beyond what the neighbour cutoff allows
+------------------------------------------------------------------------- */
+
+void PairCellSPH::too_long(int i) const
+{
+  const int t = atom->type[i];
+  const double hi = atom->dvector[ih][i];
+  error->one(FLERR,
+             "Pair cell/sph: atom {} (cell {}) needs h = {:.4g} m = {:.3g} x the h of pair_coeff "
+             "{} {} on step {}, beyond the {:.4g} m ({:.3g} x) that the neighbour cutoff allows: "
+             "give pair_style cell/sph a cutoff of at least {:.4g} m ({} h)",
+             atom->tag[i], atom->molecule ? atom->molecule[i] : 0, hi, hi / h[t][t], t, t,
+             update->ntimestep, hcap[t], hcap[t] / h[t][t], 1.1 * hi * CellKernel::support(kernel),
+             CellKernel::support(kernel));
+}
+
+/* ----------------------------------------------------------------------
+   h adaptive: Newton iterations on h_i of owned fluid atoms until rho_i h_i^d = eta^d m_i
+   (doc/pair_cell_sph.md, smoothing length), each followed by the sums at the new h
+------------------------------------------------------------------------- */
+
+void PairCellSPH::solve_h()
+{
+  for (int iter = 0;; iter++) {
+    const double change = newton_h();
+    if (change < HTOL) return;
+    hdrift += change;
+    if (iter == HITER)
+      error->all(FLERR,
+                 "Pair cell/sph: h adaptive did not converge in {} Newton iterations on step {}",
+                 HITER, update->ntimestep);
+    commode = COMM_H;
+    CellCompat::forward_comm(comm, this);
+    kernel_scales();
+    density_pass(0);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   one Newton step dh = -h (rho - rho_h) / (d rho Omega), rho_h = eta^d m / h^d, for every owned
+   fluid atom, applied only if some |dh|/h >= HTOL (on any rank); returns that largest |dh|/h
+------------------------------------------------------------------------- */
+
+double PairCellSPH::newton_h()
+{
+  double *hv = atom->dvector[ih];
+  const double *rho = atom->dvector[irho];
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int dim = domain->dimension;
+  const double etad = dim == 2 ? eta * eta : eta * eta * eta;
+  step.resize(inum);
+  double largest = 0.0, all = 0.0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    step[ii] = 0.0;
+    if (!fluid[type[i]]) continue;
+    double gamma = 1.0, dgamma = 0.0;
+    if (walls) {
+      gamma = 1.0 - deficit[i];
+      dgamma = -dhdef[i];
+      if (gamma < gamma_min) gamma = gamma_min, dgamma = 0.0;
+    }
+    const double hi = hv[i];
+    const double hd = dim == 2 ? hi * hi : hi * hi * hi;
+    // rho = S / gamma, drho/dh = S'/gamma - S gamma' / gamma^2 (doc/pair_cell_sph.md)
+    const double r = rho[i] / gamma;
+    const double dr = dsum[i] / gamma - rho[i] * dgamma / (gamma * gamma);
+    // Omega = 1 + h/(d rho) drho/dh; Newton on rho h^d - eta^d m = 0
+    const double omega = 1.0 + hi * dr / (dim * r);
+    if (!(omega > 0.0)) unsolvable(i, omega);
+    double dh = -hi * (r - etad * rmass[i] / hd) / (dim * r * omega);
+    dh = std::max(-0.2 * hi, std::min(0.2 * hi, dh));
+    step[ii] = dh;
+    largest = std::max(largest, fabs(dh) / hi);
+  }
+  MPI_Allreduce(&largest, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (all < HTOL) return all;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    if (!fluid[type[i]]) continue;
+    hv[i] += step[ii];
+    // the deficit at the new h: linear in h between exact evaluations
+    if (walls) deficit[i] += dhdef[i] * step[ii];
+    if (hv[i] > hcap[type[i]]) too_long(i);
+  }
+  return all;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellSPH::unsolvable(int i, double omega) const
+{
+  error->one(FLERR,
+             "Pair cell/sph: h adaptive: atom {} (cell {}) at ({:.4g}, {:.4g}, {:.4g}) has Omega "
+             "= 1 + h/(3 rho) drho/dh = {:.4g} <= 0 on step {}: its density falls faster than "
+             "h^-3 as h grows, and rho h^3 = eta^3 m has no unique solution (too few neighbours "
+             "for eta = {})",
+             atom->tag[i], atom->molecule ? atom->molecule[i] : 0, atom->x[i][0], atom->x[i][1],
+             atom->x[i][2], omega, update->ntimestep, eta);
 }
 
 /* ----------------------------------------------------------------------
@@ -177,6 +392,11 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(deficit0);
   memory->destroy(xbase);
   memory->destroy(slot);
+  memory->destroy(hscale);
+  memory->destroy(dsum);
+  memory->destroy(dhdef);
+  memory->destroy(dhdef0);
+  memory->destroy(hbase);
 }
 
 void PairCellSPH::grow_peratom()
@@ -185,6 +405,15 @@ void PairCellSPH::grow_peratom()
   nmax = atom->nmax;
   memory->create(prho2, nmax, "pair:prho2");
   memory->create(rhoinv, nmax, "pair:rhoinv");
+  if (hmode != HFIXED) {
+    memory->create(hscale, nmax, 4, "pair:hscale");
+    memory->create(dsum, nmax, "pair:dsum");
+    if (walls) {
+      memory->create(dhdef, nmax, "pair:dhdef");
+      memory->create(dhdef0, nmax, "pair:dhdef0");
+      memory->create(hbase, nmax, "pair:hbase");
+    }
+  }
   if (!walls) return;
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
@@ -198,10 +427,12 @@ void PairCellSPH::grow_peratom()
 
 /* ----------------------------------------------------------------------
    rho_i = sum_j m_j W_ij including j = i, into the custom vector rho of owned (and, with newton,
-   ghost) atoms; the pairs inside the support into pairj, pairdw (and pairmu)
+   ghost) atoms; the pairs inside the support into pairj, pairdw (and pairmu). With per-atom h
+   (PERATOM): W_ij = W(r_ij, h_i) in rho_i, dS/dh into dsum, both kernels' gradients kept.
+   first = 0: a Newton iteration of h adaptive, the sums only (no wall boundary)
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
+template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum_density(int first)
 {
   double **x = atom->x;
   double *rho = atom->dvector[irho];
@@ -209,6 +440,8 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
+  const double dim = domain->dimension;
+  const double w0 = CellKernel::shape<KERNEL>(0.0);
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -221,20 +454,29 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
     memory->create(pairfirst, maxfirst, "pair:pairfirst");
   }
 
-  // self term m_i W(0)
+  // self term m_i W(0); per-atom h: d(m W(0, h))/dh = -d m W(0, h) / h
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    rho[i] = rmass[i] * wself[type[i]];
+    if (PERATOM) {
+      rho[i] = rmass[i] * w0 * hscale[i][1];
+      dsum[i] = -dim * rho[i] * hscale[i][0];
+    } else {
+      rho[i] = rmass[i] * wself[type[i]];
+    }
   }
   if (newton_pair) {
     const int nall = nlocal + atom->nghost;
     for (int i = nlocal; i < nall; i++) rho[i] = 0.0;
+    if (PERATOM)
+      for (int i = nlocal; i < nall; i++) dsum[i] = 0.0;
   }
-  if (WALLS) {
+  if (WALLS && first) {
     const int nall = nlocal + atom->nghost;
     for (int i = 0; i < nall; i++) wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
     if (refreshing) {
       for (int i = 0; i < nall; i++) deficit[i] = 0.0;
+      if (PERATOM)
+        for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
       terms.clear();
       touching.clear();
     } else {
@@ -258,7 +500,7 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
     double *pdw = pairdw;
     double *pmu = pairmu;
     pairfirst[ii] = npairs;
-    double rhoi = 0.0;
+    double rhoi = 0.0, dsumi = 0.0;
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -269,6 +511,16 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= p.cutsq) continue;
 
+      if (PERATOM) {
+        // the pairs within (1 + HMARGIN) x the support of h_i or h_j
+        if (rsq >= hscale[i][3] && rsq >= hscale[j][3]) continue;
+        const double r = sqrt(rsq);
+        pairr[npairs] = r;
+        pj[npairs] = j;
+        peratom_pair<KERNEL, VISCOUS>(i, j, r, p.mu2, npairs, rhoi, dsumi);
+        npairs++;
+        continue;
+      }
       const double r = sqrt(rsq);
       const double mj = rmass[j];
       // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2)
@@ -283,19 +535,88 @@ template <int KERNEL, int VISCOUS, int WALLS> void PairCellSPH::sum_density()
       npairs++;
     }
     rho[i] += rhoi;
+    if (PERATOM) dsum[i] += dsumi;
   }
   pairfirst[inum] = npairs;
 
   // the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f
-  if (WALLS && refreshing)
+  if (WALLS && first && refreshing)
     for (const auto &fb : boundarypairs) {
       const int f = fb[0], b = fb[1];
       const double delx = x[f][0] - x[b][0];
       const double dely = x[f][1] - x[b][1];
       const double delz = x[f][2] - x[b][2];
       const PairConst &p = pc[type[f]][type[b]];
-      if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms(f, b, p);
+      if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms<PERATOM>(f, b, p);
     }
+}
+
+/* ----------------------------------------------------------------------
+   per-atom h: pair k (i, j at distance r) into rho_i (here rhoi, dsumi), rho_j and dS/dh, and the
+   pair's kernel gradients at h_i and h_j (zero outside each support)
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int VISCOUS>
+inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k, double &rhoi,
+                                      double &dsumi)
+{
+  const double support = CellKernel::support(KERNEL);
+  const double dim = domain->dimension;
+  const double mi = atom->rmass[i], mj = atom->rmass[j];
+  const double qi = r * hscale[i][0], qj = r * hscale[j][0];
+  double dwi = 0.0, dwj = 0.0;
+  if (qi < support) {
+    // rho_i += m_j W(r, h_i); dW/dh = -(d W + r dW/dr) / h (doc/pair_cell_sph.md)
+    const double f = CellKernel::shape<KERNEL>(qi), g = CellKernel::slope<KERNEL>(qi);
+    rhoi += mj * hscale[i][1] * f;
+    dsumi -= mj * hscale[i][1] * hscale[i][0] * (dim * f + qi * qi * g);
+    dwi = hscale[i][2] * g;
+  }
+  if (qj < support) {
+    const double f = CellKernel::shape<KERNEL>(qj), g = CellKernel::slope<KERNEL>(qj);
+    if (force->newton_pair || j < atom->nlocal) {
+      atom->dvector[irho][j] += mi * hscale[j][1] * f;
+      dsum[j] -= mi * hscale[j][1] * hscale[j][0] * (dim * f + qj * qj * g);
+    }
+    dwj = hscale[j][2] * g;
+  }
+  pairdw[k] = mi * mj * dwi;
+  pairdwj[k] = mi * mj * dwj;
+  // viscosity with the mean of the two kernels' gradients (doc/pair_cell_sph.md)
+  if (VISCOUS) pairmu[k] = 0.5 * mu2 * (pairdw[k] + pairdwj[k]);
+}
+
+/* ----------------------------------------------------------------------
+   h adaptive, an iteration while every h changed by less than HMARGIN since the last density
+   pass: the sums over that pass's pairs, at the new h
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int VISCOUS> void PairCellSPH::resum_density()
+{
+  double *rho = atom->dvector[irho];
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const double dim = domain->dimension;
+  const double w0 = CellKernel::shape<KERNEL>(0.0);
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    rho[i] = rmass[i] * w0 * hscale[i][1];
+    dsum[i] = -dim * rho[i] * hscale[i][0];
+  }
+  if (force->newton_pair)
+    for (int i = nlocal; i < nlocal + atom->nghost; i++) rho[i] = dsum[i] = 0.0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const PairConst *pci = pc[type[i]];
+    double rhoi = 0.0, dsumi = 0.0;
+    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++)
+      peratom_pair<KERNEL, VISCOUS>(i, pairj[k], pairr[k], pci[type[pairj[k]]].mu2, k, rhoi, dsumi);
+    rho[i] += rhoi;
+    dsum[i] += dsumi;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -305,6 +626,10 @@ void PairCellSPH::grow_pairs(int n)
   maxpairs = n + n / 2;
   memory->grow(pairj, maxpairs, "pair:pairj");
   memory->grow(pairdw, maxpairs, "pair:pairdw");
+  if (hmode != HFIXED) {
+    memory->grow(pairdwj, maxpairs, "pair:pairdwj");
+    memory->grow(pairr, maxpairs, "pair:pairr");
+  }
   memory->grow(pairmu, maxpairs, "pair:pairmu");
 }
 
@@ -313,7 +638,7 @@ void PairCellSPH::grow_pairs(int n)
    kernel deficit, its gradient, and the contact with the wall surface
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
+template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
 {
   double **x = atom->x;
   const double *xf = x[f];
@@ -329,18 +654,21 @@ void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
     const double g[3] = {(ra[0] + rb[0] + rc[0]) / 3.0, (ra[1] + rb[1] + rc[1]) / 3.0,
                          (ra[2] + rb[2] + rc[2]) / 3.0};
     const double gl = sqrt(CellTriangle::dot(g, g));
-    const double q = gl * p.scale.invh;
+    const double invh = PERATOM ? hscale[f][0] : p.scale.invh;
+    const double q = gl * invh;
     if (q >= support) continue;
     double ph, dph;
     phi_beyond(q, ph, dph);
     // D_T = Phi(|g|/h) Omega_T / (4 pi), Omega_T the solid angle of T seen from f (exact: a point
     // formula (g . S_T)/|g|^3 would err by 1e-3 in gamma, 2 % in pressure); 1 - gamma_f = sum_T D_T
-    double omega, dom[3][3];
-    CellTriangle::solid_angle(ra, rb, rc, omega, dom);
-    deficit[f] += ph * omega / (4.0 * M_PI);
+    double solid, dom[3][3];
+    CellTriangle::solid_angle(ra, rb, rc, solid, dom);
+    deficit[f] += ph * solid / (4.0 * M_PI);
+    // per-atom h: dD_T/dh = -Phi'(q) q Omega_T / (4 pi h)
+    if (PERATOM) dhdef[f] -= dph * q * invh * solid / (4.0 * M_PI);
     // dD_T/dx_v = Phi'(q) Omega g / (12 pi h |g|) + Phi / (4 pi) dOmega/dx_v (d|g|/dx_v = g / 3|g|),
     // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
-    const double cg = dph * omega * p.scale.invh / (12.0 * M_PI * gl);
+    const double cg = dph * solid * invh / (12.0 * M_PI * gl);
     const double co = ph / (4.0 * M_PI);
     for (int v = 0; v < 3; v++) {
       Term tm{f, v == 0 ? a : v == 1 ? b : c, {}};
@@ -422,18 +750,34 @@ void PairCellSPH::merge_terms()
     deficit0[i] = deficit[i];
     for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
   }
+  if (hmode != HFIXED) {
+    const double *hv = atom->dvector[ih];
+    for (int i = 0; i < nall; i++) {
+      dhdef0[i] = dhdef[i];
+      hbase[i] = hv[i];
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------
-   between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f),
-   dx the displacement since the base (grad_f D_f = -sum_v grad_v D_f)
+   between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f)
+   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base
+   (grad_f D_f = -sum_v grad_v D_f)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::linear_deficit()
 {
   double **x = atom->x;
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) deficit[i] = deficit0[i];
+  if (hmode != HFIXED) {
+    const double *hv = atom->dvector[ih];
+    for (int i = 0; i < nall; i++) {
+      dhdef[i] = dhdef0[i];
+      deficit[i] = deficit0[i] + dhdef0[i] * (hv[i] - hbase[i]);
+    }
+  } else {
+    for (int i = 0; i < nall; i++) deficit[i] = deficit0[i];
+  }
   for (const Term &tm : terms) {
     const double *xv = x[tm.v], *xf = x[tm.f], *bv = xbase[tm.v], *bf = xbase[tm.f];
     deficit[tm.f] += tm.grad[0] * (xv[0] - bv[0] - xf[0] + bf[0]) +
@@ -669,7 +1013,8 @@ void PairCellSPH::unstable(int i) const
              "{:.3g} rho0 on step {}, outside (0, 2 rho0]: the run went unstable; the acoustic "
              "time step limit is 0.25 h / c = {:.3g} s (c = sqrt(K / rho0) = {:.4g} m/s)",
              atom->tag[i], atom->molecule ? atom->molecule[i] : 0, atom->x[i][0], atom->x[i][1],
-             atom->x[i][2], rho, rho * invrho0[t], update->ntimestep, 0.25 * h[t][t] / c, c);
+             atom->x[i][2], rho, rho * invrho0[t], update->ntimestep,
+             0.25 * (hmode == HFIXED ? h[t][t] : atom->dvector[ih][i]) / c, c);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -689,6 +1034,15 @@ void PairCellSPH::apply_eos()
     if (!fluid[t]) continue;
     // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
     const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    // h adaptive: Omega = 1 + h/(d rho) drho/dh, drho/dh = S'/gamma + S D'/gamma^2 (above the
+    // floor); it divides the atom's density gradient (doc/pair_cell_sph.md); 1 at fixed h
+    double omega = 1.0;
+    if (hmode == HADAPTIVE) {
+      const double dgamma = walls && 1.0 - deficit[i] >= gamma_min ? -dhdef[i] : 0.0;
+      const double dr = dsum[i] / gamma - rho[i] * dgamma / (gamma * gamma);
+      omega = 1.0 + atom->dvector[ih][i] * dr * gamma / (domain->dimension * rho[i]);
+    }
+    if (hmode != HFIXED) atom->dvector[iomega][i] = omega;
     rho[i] /= gamma;
     const double x = rho[i] * invrho0[t];
     double e = 0.0;
@@ -705,8 +1059,9 @@ void PairCellSPH::apply_eos()
     }
     if (!(x > 0.0 && x <= 2.0) || !std::isfinite(pressure[i])) unstable(i);
     rhoinv[i] = 1.0 / rho[i];
-    // P / (rho^2 gamma): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2 without walls)
-    prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / gamma;
+    // P / (rho^2 gamma Omega): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2
+    // without walls at fixed h)
+    prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / (gamma * omega);
     if (eflag_global) eng_vdwl += rmass[i] * e;
     if (eflag_atom) eatom[i] += rmass[i] * e;
   }
@@ -717,7 +1072,7 @@ void PairCellSPH::apply_eos()
    the energy is the equation-of-state energy of apply_eos()
 ------------------------------------------------------------------------- */
 
-template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
+template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -744,8 +1099,10 @@ template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
-      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4)
-      const double fpress = -pairdw[k] * (prho2i + prho2[j]);
+      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4); per-atom h:
+      // -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i W(h_j))
+      const double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
+                                    : -pairdw[k] * (prho2i + prho2[j]);
       double fx = delx * fpress;
       double fy = dely * fpress;
       double fz = delz * fpress;
@@ -791,6 +1148,7 @@ void PairCellSPH::allocate()
   memory->create(invrho0, n, "pair:invrho0");
   memory->create(eosk, n, "pair:eosk");
   memory->create(fluid, n, "pair:fluid");
+  memory->create(hcap, n, "pair:hcap");
   for (int i = 0; i < n; i++) {
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
@@ -798,13 +1156,14 @@ void PairCellSPH::allocate()
       boundary[i][j] = 0;
       pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
     }
-    wself[i] = invrho0[i] = eosk[i] = 0.0;
+    wself[i] = invrho0[i] = eosk[i] = hcap[i] = 0.0;
     fluid[i] = 0;
   }
 }
 
 /* ----------------------------------------------------------------------
    pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [eos linear|tait]
+                       [h fixed|mass <eta>|adaptive <eta>]
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::settings(int narg, char **arg)
@@ -813,6 +1172,8 @@ void PairCellSPH::settings(int narg, char **arg)
   cut_global = 0.0;
   kernel = CellKernel::WENDLAND;
   eos = LINEAR;
+  hmode = HFIXED;
+  eta = 0.0;
   if (narg > 0 && utils::is_double(arg[0])) {
     cut_global = utils::numeric(FLERR, arg[0], false, lmp);
     if (cut_global <= 0.0)
@@ -823,7 +1184,25 @@ void PairCellSPH::settings(int narg, char **arg)
     if (iarg + 1 >= narg)
       error->all(FLERR, "Pair style cell/sph: keyword '{}' needs a value", arg[iarg]);
     const std::string value = arg[iarg + 1];
-    if (strcmp(arg[iarg], "kernel") == 0) {
+    if (strcmp(arg[iarg], "h") == 0) {
+      if (value == HMODE_NAMES[HFIXED]) {
+        hmode = HFIXED;
+      } else if (value == HMODE_NAMES[HMASS] || value == HMODE_NAMES[HADAPTIVE]) {
+        hmode = value == HMODE_NAMES[HMASS] ? HMASS : HADAPTIVE;
+        if (iarg + 2 >= narg)
+          error->all(FLERR, "Pair style cell/sph: 'h {}' needs a value eta (h = eta (m/rho)^(1/3))",
+                     value);
+        eta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+        if (eta <= 0.0)
+          error->all(FLERR, "Pair style cell/sph: h {} eta = {} must be > 0", value, eta);
+        iarg++;
+      } else {
+        error->all(FLERR,
+                   "Pair style cell/sph: unknown h mode '{}' (expected fixed, mass <eta> or "
+                   "adaptive <eta>)",
+                   value);
+      }
+    } else if (strcmp(arg[iarg], "kernel") == 0) {
       kernel = CellKernel::parse(value);
       if (kernel < 0)
         error->all(FLERR,
@@ -839,8 +1218,8 @@ void PairCellSPH::settings(int narg, char **arg)
         error->all(FLERR, "Pair style cell/sph: unknown eos '{}' (expected linear or tait)", value);
     } else {
       error->all(FLERR,
-                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel' or "
-                 "'eos')",
+                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos' "
+                 "or 'h')",
                  arg[iarg]);
     }
     iarg += 2;
@@ -940,6 +1319,18 @@ void PairCellSPH::init_style()
                "Pair style cell/sph needs the per-atom vector pressure: add 'fix cellsph all "
                "property/atom d_rho d_pressure ghost yes' before read_data");
 
+  if (hmode != HFIXED) {
+    int hflag, hcols, oflag, ocols;
+    ih = atom->find_custom("h", hflag, hcols);
+    iomega = atom->find_custom("omega", oflag, ocols);
+    if (ih < 0 || hflag != 1 || hcols != 0 || iomega < 0 || oflag != 1 || ocols != 0)
+      error->all(FLERR,
+                 "Pair style cell/sph: h {} needs the per-atom vectors h and omega: add 'fix "
+                 "cellsph all property/atom d_rho d_pressure d_h d_omega ghost yes' before "
+                 "read_data",
+                 HMODE_NAMES[hmode]);
+  }
+
   const int n = atom->ntypes;
   viscous = 0;
   bool all_set = true;
@@ -950,6 +1341,9 @@ void PairCellSPH::init_style()
       all_set = all_set && setflag[i][j];
     }
   }
+  // per-atom h: the largest h of each fluid type that the neighbour cutoff allows
+  for (int i = 1; i <= n; i++)
+    hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : HCAP * h[i][i];
   walls = has_wall_boundary() ? 1 : 0;
   if (walls) {
     if (domain->dimension != 3)
@@ -1009,7 +1403,7 @@ double PairCellSPH::init_one(int i, int j)
                  "Pair cell/sph: pair_coeff {} {} wall needs one fluid type (with pair_coeff K K "
                  "cell/sph) and one wall type (without)",
                  i, j);
-    const double support = CellKernel::support(kernel) * h[f][f];
+    const double support = CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]);
     // contact range delta = h / 5 and force F_c = K delta^2 at the surface (doc/pair_cell_sph.md)
     const double reach = h[f][f] / CONTACT_H;
     // the neighbour range reaches every triangle whose centroid is inside the kernel support:
@@ -1043,7 +1437,10 @@ double PairCellSPH::init_one(int i, int j)
                cut_global, support, CellKernel::NAMES[kernel], i, j, CellKernel::support(kernel),
                h[i][j]);
 
-  pc[i][j].cutsq = support * support;
+  // per-atom h: every pair within the support of the largest h allowed
+  const double reach =
+      hmode == HFIXED ? support : CellKernel::support(kernel) * std::max(hcap[i], hcap[j]);
+  pc[i][j].cutsq = reach * reach;
   pc[i][j].scale = CellKernel::scale(kernel, dim, h[i][j]);
   pc[i][j].mu2 = 2.0 * mu[i][j];
   pc[i][j].boundary = 0;
@@ -1054,7 +1451,7 @@ double PairCellSPH::init_one(int i, int j)
     invrho0[i] = 1.0 / rho0[i][i];
     eosk[i] = eos == TAIT ? bulk[i][i] / 7.0 : bulk[i][i];
   }
-  return cut_global > 0.0 ? cut_global : support;
+  return cut_global > 0.0 ? cut_global : reach;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1112,6 +1509,8 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&kernel, sizeof(int), 1, fp);
   fwrite(&eos, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
+  fwrite(&hmode, sizeof(int), 1, fp);
+  fwrite(&eta, sizeof(double), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1126,12 +1525,20 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     kernel = first;
     utils::sfread(FLERR, &eos, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
+    hmode = HFIXED;
+    eta = 0.0;
+    if (restart_version >= 3) {
+      utils::sfread(FLERR, &hmode, sizeof(int), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &eta, sizeof(double), 1, fp, nullptr, error);
+    }
   }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
   MPI_Bcast(&eos, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&hmode, 1, MPI_INT, 0, world);
+  MPI_Bcast(&eta, 1, MPI_DOUBLE, 0, world);
 }
 
 /* ----------------------------------------------------------------------
@@ -1177,6 +1584,17 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   if (rsq >= p.cutsq || p.boundary) return 0.0;
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
+  if (hmode != HFIXED) {
+    // per-atom h: -m_i m_j (P_i/(Omega_i rho_i^2) dW(h_i) + P_j/(Omega_j rho_j^2) dW(h_j))
+    const double *hv = atom->dvector[ih];
+    const double *omega = atom->dvector[iomega];
+    const double r = sqrt(rsq), support = CellKernel::support(kernel);
+    for (int k : {i, j})
+      if (r < support * hv[k])
+        fforce -= atom->rmass[i] * atom->rmass[j] * pressure[k] / (omega[k] * rho[k] * rho[k]) *
+            CellKernel::dWr(kernel, CellKernel::scale(kernel, domain->dimension, hv[k]), r);
+    return 0.0;
+  }
   // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (doc/model.md §3.4)
   fforce = -atom->rmass[i] * atom->rmass[j] *
       (pressure[i] / (rho[i] * rho[i]) + pressure[j] / (rho[j] * rho[j])) *
@@ -1219,12 +1637,22 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
     }
     return m;
   }
+  if (commode == COMM_H) {
+    const double *hv = atom->dvector[ih];
+    for (int k = 0; k < n; k++) buf[m++] = hv[list[k]];
+    return m;
+  }
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
+  const int peratom = hmode != HFIXED;
   for (int k = 0; k < n; k++) {
     buf[m++] = rho[list[k]];
     buf[m++] = pressure[list[k]];
     if (walls) buf[m++] = deficit[list[k]];
+    if (peratom) {
+      buf[m++] = atom->dvector[ih][list[k]];
+      buf[m++] = atom->dvector[iomega][list[k]];
+    }
   }
   return m;
 }
@@ -1247,27 +1675,41 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
     }
     return;
   }
+  if (commode == COMM_H) {
+    double *hv = atom->dvector[ih];
+    for (int i = first; i < first + n; i++) hv[i] = buf[m++];
+    return;
+  }
   double *rho = atom->dvector[irho];
   double *pressure = atom->dvector[ipressure];
+  const int peratom = hmode != HFIXED;
   for (int i = first; i < first + n; i++) {
     rho[i] = buf[m++];
     pressure[i] = buf[m++];
     if (walls) deficit[i] = buf[m++];
+    if (peratom) {
+      atom->dvector[ih][i] = buf[m++];
+      atom->dvector[iomega][i] = buf[m++];
+    }
   }
 }
 
 /* ----------------------------------------------------------------------
-   ghost sums into owners: rho (and the kernel deficit), or the wall load
+   ghost sums into owners: rho (dS/dh with per-atom h, and the kernel deficit and its dh), the
+   sums only (an iteration of h adaptive), or the wall load
 ------------------------------------------------------------------------- */
 
 int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_DENSITY) {
+  if (commode == COMM_DENSITY || commode == COMM_SUMS) {
     const double *rho = atom->dvector[irho];
+    const int peratom = hmode != HFIXED, wall = walls && commode == COMM_DENSITY;
     for (int i = first; i < first + n; i++) {
       buf[m++] = rho[i];
-      if (walls) buf[m++] = deficit[i];
+      if (peratom) buf[m++] = dsum[i];
+      if (wall) buf[m++] = deficit[i];
+      if (wall && peratom) buf[m++] = dhdef[i];
     }
     return m;
   }
@@ -1281,11 +1723,14 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
 void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
-  if (commode == COMM_DENSITY) {
+  if (commode == COMM_DENSITY || commode == COMM_SUMS) {
     double *rho = atom->dvector[irho];
+    const int peratom = hmode != HFIXED, wall = walls && commode == COMM_DENSITY;
     for (int k = 0; k < n; k++) {
       rho[list[k]] += buf[m++];
-      if (walls) deficit[list[k]] += buf[m++];
+      if (peratom) dsum[list[k]] += buf[m++];
+      if (wall) deficit[list[k]] += buf[m++];
+      if (wall && peratom) dhdef[list[k]] += buf[m++];
     }
     return;
   }
@@ -1311,6 +1756,9 @@ double PairCellSPH::memory_usage()
 {
   double bytes = Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
+  if (hmode != HFIXED)
+    bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
+        step.capacity() * sizeof(double);
   if (walls)
     bytes += nmax * (8.0 * sizeof(double) + 3.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
         contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +

@@ -42,10 +42,15 @@ class PairCellSPH : public Pair {
   double memory_usage() override;
 
   enum Eos { LINEAR = 0, TAIT = 1 };
+  // smoothing length: the pair_coeff value, eta (m/rho0)^(1/3) per atom, or eta (m/rho)^(1/3)
+  enum HMode { HFIXED = 0, HMASS = 1, HADAPTIVE = 2 };
 
  protected:
   int kernel, eos;
   double cut_global;    // neighbour cutoff from pair_style; 0 = the kernel support
+  int hmode;            // HFIXED, HMASS or HADAPTIVE (pair_style keyword h)
+  double eta;           // h = eta (m/rho0)^(1/3) or eta (m/rho)^(1/3) per atom
+  double hdrift;        // h adaptive: largest relative change of h since the last density pass
 
   double **rho0, **bulk, **mu, **h;    // pair_coeff values per type pair
 
@@ -66,6 +71,16 @@ class PairCellSPH : public Pair {
   int viscous;            // 1 if any computed pair has mu > 0
   double shared[2];       // rho0 and K shared by all fluid types, for extract()
   int irho, ipressure;    // custom per-atom vectors rho and pressure
+  // per-atom h (h mass, h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
+  // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
+  int ih, iomega;
+  double *hcap;                // largest h the neighbour cutoff allows, per fluid type
+  double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
+  double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
+  double *dhdef;               // wall boundary: d(1 - gamma_i)/dh_i
+  double *dhdef0;              // the same at the last exact evaluation (partial sums per rank)
+  double *hbase;               // h at the last exact evaluation
+  std::vector<double> step;    // Newton step of h of the list's atoms
 
   // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
   // cell's wall; the wall enters as the surface integral of its triangles (doc/pair_cell_sph.md)
@@ -105,7 +120,7 @@ class PairCellSPH : public Pair {
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
   std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
   std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell
-  enum { COMM_DENSITY, COMM_LOAD, COMM_TRIANGLES } commode;
+  enum { COMM_DENSITY, COMM_SUMS, COMM_H, COMM_LOAD, COMM_TRIANGLES } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
@@ -113,21 +128,33 @@ class PairCellSPH : public Pair {
   int nmax;
 
   // pairs inside the kernel support, found by the density pass and reused by the force pass
-  int *pairfirst;    // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
-  int *pairj;        // neighbour index j
-  double *pairdw;    // m_i m_j (1/r) dW/dr
-  double *pairmu;    // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
+  int *pairfirst;     // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
+  int *pairj;         // neighbour index j
+  double *pairdw;     // m_i m_j (1/r) dW/dr (per-atom h: at h_i)
+  double *pairdwj;    // per-atom h: m_i m_j (1/r) dW/dr at h_j
+  double *pairr;      // per-atom h: r_ij
+  double *pairmu;     // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
   int maxfirst, maxpairs;
 
   void allocate();
   void grow_peratom();
   void destroy_peratom();
   void unstable(int) const;
-  template <int KERNEL, int VISCOUS, int WALLS> void sum_density();
-  template <int VISCOUS, int EVFLAG> void sum_forces();
+  template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
+  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
+  template <int KERNEL, int VISCOUS>
+  void peratom_pair(int, int, double, double, int, double &, double &);
+  template <int KERNEL, int VISCOUS> void resum_density();
+  void density_pass(int);
+  void atom_h(int &);
+  void kernel_scales();
+  double newton_h();
+  void solve_h();
+  void too_long(int) const;
+  void unsolvable(int, double) const;
   template <int EVFLAG> void wall_forces();
   void wall_triangles();
-  void boundary_terms(int, int, const PairConst &);
+  template <int PERATOM> void boundary_terms(int, int, const PairConst &);
   void split_list();
   void merge_terms();
   void linear_deficit();
