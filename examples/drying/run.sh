@@ -70,7 +70,8 @@ set output 'fig_shrinkage.png'
 set terminal pngcairo size 1400,1000 noenhanced font ",11"
 set multiplot layout 2,2 title "Section through the cell centre (plane z) and volume against X/X0; crosses: Karunasena et al. 2014 (dried Gala apple)"
 set xrange [1:0]
-set yrange [0:1.4]
+set yrange [0:1.6]
+set ylabel 'relative to the turgid cell'
 set key bottom left
 set title 'section area'
 plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
