@@ -5,8 +5,9 @@
 # cell fresh, at the turgor loss point, half dry and dry, and a check that the wall never passed
 # through itself (tools/wall_self_intersection.py on every wall snapshot). Outputs in out/.
 # Needs the set-up of tools/setup.sh. The two temperatures run one after the other on NP ranks
-# (default 2). RES=coarse runs the 312-particle wall instead of the seed's 1092. Wall-clock: see
-# README.md (a few minutes on a loaded 2-core machine).
+# (default 2; NP=1 was faster on a machine whose cores other jobs loaded). RES=coarse runs the
+# 312-particle wall instead of the seed's 1092. Measured 568 s with NP=1 on a loaded 2-core
+# machine (README.md).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
