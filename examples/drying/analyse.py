@@ -51,7 +51,6 @@ def main(tags):
         r0, half, end = rs[0], at(rs, 0.5), rs[-1]
         tlp = first_line(f"tlp_{tag}.txt")
         inter = first_line(f"intersections_{tag}.txt")
-        m0 = end["moved"] - end["dMfluid"]
         acct = max(abs(r["moved"] - r["dMfluid"]) for r in rs) / abs(rs[-1]["dMfluid"] or 1)
         print(f"\n{tag}: X/X0 = {end['X']:.3f} after {end['t'] / 60:.1f} min of physical time "
               f"(X = {end['X_db']:.3f} kg/kg); wall-clock {wall_time(tag)} s")
@@ -69,7 +68,6 @@ def main(tags):
         print(f"  checks: fluid atoms outside the wall at most {max(r['out'] for r in rs):.0f}; "
               f"wall self-intersections at most {inter[0] if inter != 'n/a' else 'n/a'} triangle pairs; "
               f"|water moved - fluid mass change| / water lost at most {acct:.1e}")
-        del m0
 
 
 if __name__ == "__main__":
