@@ -6,7 +6,7 @@
 # through itself (tools/wall_self_intersection.py on every wall snapshot). Outputs in out/.
 # Needs the set-up of tools/setup.sh. The two temperatures run one after the other on NP ranks
 # (default 2; NP=1 was faster on a machine whose cores other jobs loaded). RES=coarse runs the
-# 312-particle wall instead of the seed's 1092. Measured 568 s with NP=1 on a loaded 2-core
+# 312-particle wall instead of the seed's 1092. Measured 356 s with NP=1 on a loaded 2-core
 # machine (README.md).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
