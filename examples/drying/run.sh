@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Drying of one turgid apple cell in hot air at 40 and 70 C (RH 0.15), in physical time, to
+# X/X0 <= 0.2 (in.drying): drying curves X/X0 against time, section descriptors and volume against
+# X/X0 with the end values of Karunasena et al. 2014 marked (analyse.py, gnuplot), pictures of the
+# cell fresh, at the turgor loss point, half dry and dry, and a check that the wall never passed
+# through itself (tools/wall_self_intersection.py on every wall snapshot). Outputs in out/.
+# Needs the set-up of tools/setup.sh. The two temperatures run one after the other on NP ranks
+# (default 2; NP=1 was faster on a machine whose cores other jobs loaded). RES=coarse runs the
+# 312-particle wall instead of the seed's 1092. Measured 356 s with NP=1 on a loaded 2-core
+# machine (README.md).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+build=${CELLSPH_BUILD:-$here/../../build}
+np=${NP:-2}
+res=${RES:-seed}
+out=$here/out
+mkdir -p "$out"
+cd "$out"
+rm -f dry_*.dat final_*.txt tlp_*.txt wall_*.dump pic_*.png fig_*.png summary.txt intersections_*.txt
+export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
+if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$build/bin/lmp"); fi
+start=$(date +%s)
+stamp() { echo "[drying] $1 ($(($(date +%s) - start)) s)"; }
+
+# the cell: sphere of R0 = 75 um, icosahedral wall with one dihedral per edge (bending), wall
+# particles as heavy as fluid particles; h and dt follow the fluid spacing (h = 1.27 DX)
+if [ "$res" = coarse ]; then
+  "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals --out cell.data >cellgen.log
+  scale=(-var h 18.18e-6 -var dt 1.5e-8 -var ws 1.871 -var nup 6000)
+  runs=("T70 343.15 2e6" "T40 313.15 8e6")
+else
+  "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals --out cell.data >cellgen.log
+  scale=()
+  runs=("T70 343.15 3e6" "T40 313.15 1.2e7")
+fi
+
+# 70 C and 40 C, RH 0.15, h_m = 2 cm/s on 1 % of the wall; accel chosen so that both dry to 0.2 in
+# about the same number of steps (0.03 s of physical time per step at 70 C; the air at 40 C
+# carries 3.9 x less vapour)
+for run in "${runs[@]}"; do
+  set -- $run
+  t0=$(date +%s)
+  "${lmp[@]}" -in "$here/in.drying" -var tag "$1" -var T "$2" -var accel "$3" -var images 1 "${scale[@]}" \
+    -log "log.$1" >"$1.screen"
+  stamp "$1: $(grep '^dried' "$1.screen") [$(($(date +%s) - t0)) s]"
+  python3 "$here/../../tools/wall_self_intersection.py" cell.data "wall_$1.dump" --quiet --out "intersections_$1.txt" ||
+    echo "[drying] $1: the wall passed through itself (intersections_$1.txt)"
+done
+
+python3 "$here/analyse.py" T70 T40 >summary.txt
+
+gnuplot <<'GP'
+set terminal pngcairo size 1400,600 noenhanced font ",11"
+set output 'fig_drying_curve.png'
+set multiplot layout 1,2 title "Drying of one apple cell in air (RH 0.15, h_m 2 cm/s on 1 % of the wall)"
+set grid
+set xlabel 'physical time (min)'
+set ylabel 'X / X0'
+set key top right
+plot 'dry_T70.dat' using ($1/60):2 with lines lw 2 title '70 C', 'dry_T40.dat' using ($1/60):2 with lines lw 2 title '40 C'
+set ylabel 'pressure (kPa)'
+set xlabel 'X / X0'
+set xrange [1:0]
+plot 'dry_T70.dat' using 2:($4/1e3) with lines lw 2 title 'turgor P_T, 70 C', 'dry_T40.dat' using 2:($4/1e3) with lines lw 2 title 'turgor P_T, 40 C', \
+     'dry_T70.dat' using 2:($5/1e3) with lines dt 2 title 'osmotic pressure, 70 C'
+unset multiplot
+set output 'fig_shrinkage.png'
+set terminal pngcairo size 1400,1000 noenhanced font ",11"
+set multiplot layout 2,2 title "Section through the cell centre (plane z) and volume against X/X0; crosses: Karunasena et al. 2014 (dried Gala apple)"
+set xrange [1:0]
+set yrange [0:1.6]
+set ylabel 'relative to the turgid cell'
+set key bottom left
+set title 'section area'
+plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
+0.2 0.4
+e
+set title 'perimeter'
+plot 'dry_T70.dat' using 2:9 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:9 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -30 %'
+0.2 0.7
+e
+set title 'Feret diameter'
+plot 'dry_T70.dat' using 2:10 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:10 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -40 %'
+0.2 0.6
+e
+set title 'volume (wall-enclosed) and wrinkling'
+plot 'dry_T70.dat' using 2:7 with lines lw 2 title 'V/V0, 70 C', 'dry_T40.dat' using 2:7 with lines lw 2 title 'V/V0, 40 C', \
+     'dry_T70.dat' using 2:14 with lines dt 2 lw 2 title 'wrinkling, 70 C', x with lines dt 3 lc rgb 'gray' title 'V/V0 = X/X0'
+unset multiplot
+GP
+stamp "done; outputs in $out"
+cat summary.txt
