@@ -129,6 +129,14 @@ void DihedralCellBending::compute(int eflag, int vflag)
                  "Dihedral cell/bending: a reference (xref) triangle of dihedral {}-{}-{}-{} has "
                  "zero area",
                  tag[i1], tag[i2], tag[i3], tag[i4]);
+    // an edge over 3 x its reference length means a wrong periodic image (ghost cutoff too short)
+    if (dot(e, e) > 9.0 * dot(e0, e0) || dot(u1, u1) > 9.0 * dot(v1, v1) ||
+        dot(u2, u2) > 9.0 * dot(v2, v2))
+      error->one(FLERR,
+                 "Dihedral cell/bending: dihedral {}-{}-{}-{} spans over 3 x its reference edge "
+                 "lengths: an atom was taken from another periodic image (set comm_modify cutoff "
+                 "above the longest dihedral span) or the wall is torn",
+                 tag[i1], tag[i2], tag[i3], tag[i4]);
 
     // k = kappa l0^2 / (A1 + A2), reference edge length and triangle areas (doc/model.md §4.2)
     const double k = 2.0 * kappa[type] * h0.ee / (sqrt(h0.nn1) + sqrt(h0.nn2));
