@@ -15,14 +15,17 @@
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "cell_triangle.h"
+#include "cell_water.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "input.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
+#include "variable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,8 +33,10 @@
 
 using namespace LAMMPS_NS;
 
-// 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta
-static const int RESTART_VERSION = 3;
+// 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
+// 4: the temperature of the viscosity (temp, Tref)
+static const int RESTART_VERSION = 4;
+static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
 static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
@@ -70,6 +75,12 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
+  temp_set = 0;
+  temp_value = 0.0;
+  temp_ivar = -1;
+  tref = TREF_DEFAULT;
+  muscale = 1.0;
+  temperature = 0.0;
   writedata = 1;
   reinitflag = 0;
   comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
@@ -113,6 +124,7 @@ void PairCellSPH::compute(int eflag, int vflag)
   const int peratom = hmode != HFIXED;
   const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum);
   if (grown) grow_peratom();
+  if (temp_set) update_viscosity();
 
   if (walls) {
     if (neighbor->ago == 0 || grown) {
@@ -1163,8 +1175,14 @@ void PairCellSPH::allocate()
 
 /* ----------------------------------------------------------------------
    pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [eos linear|tait]
-                       [h fixed|mass <eta>|adaptive <eta>]
+                       [h fixed|mass <eta>|adaptive <eta>] [temp <T>] [Tref <T0>]
 ------------------------------------------------------------------------- */
+
+// the range of the Vogel correlation of the viscosity of water
+static bool vogel_range(double t)
+{
+  return t >= CellWater::VOGEL_TMIN && t <= CellWater::VOGEL_TMAX;
+}
 
 void PairCellSPH::settings(int narg, char **arg)
 {
@@ -1174,6 +1192,12 @@ void PairCellSPH::settings(int narg, char **arg)
   eos = LINEAR;
   hmode = HFIXED;
   eta = 0.0;
+  temp_set = 0;
+  temp_value = 0.0;
+  temp_name.clear();
+  temp_ivar = -1;
+  tref = TREF_DEFAULT;
+  muscale = 1.0;
   if (narg > 0 && utils::is_double(arg[0])) {
     cut_global = utils::numeric(FLERR, arg[0], false, lmp);
     if (cut_global <= 0.0)
@@ -1202,6 +1226,31 @@ void PairCellSPH::settings(int narg, char **arg)
                    "adaptive <eta>)",
                    value);
       }
+    } else if (strcmp(arg[iarg], "temp") == 0) {
+      temp_set = 1;
+      if (value.compare(0, 2, "v_") == 0) {
+        temp_name = value.substr(2);
+        if (temp_name.empty())
+          error->all(FLERR, "Pair style cell/sph: temp '{}' names no variable", value);
+      } else {
+        temp_name.clear();
+        temp_value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+        if (!vogel_range(temp_value))
+          error->all(FLERR,
+                     "Pair style cell/sph: temperature T = {} K is outside {}-{} K (0-370 C), the "
+                     "range of the Vogel correlation of the viscosity of water",
+                     temp_value, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
+      }
+    } else if (strcmp(arg[iarg], "Tref") == 0) {
+      tref = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(tref > 0.0))
+        error->all(FLERR, "Pair style cell/sph: reference temperature Tref = {} K must be > 0",
+                   tref);
+      if (!vogel_range(tref))
+        error->all(FLERR,
+                   "Pair style cell/sph: reference temperature Tref = {} K is outside {}-{} K "
+                   "(0-370 C), the range of the Vogel correlation of the viscosity of water",
+                   tref, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
     } else if (strcmp(arg[iarg], "kernel") == 0) {
       kernel = CellKernel::parse(value);
       if (kernel < 0)
@@ -1218,8 +1267,8 @@ void PairCellSPH::settings(int narg, char **arg)
         error->all(FLERR, "Pair style cell/sph: unknown eos '{}' (expected linear or tait)", value);
     } else {
       error->all(FLERR,
-                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos' "
-                 "or 'h')",
+                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos', "
+                 "'h', 'temp' or 'Tref')",
                  arg[iarg]);
     }
     iarg += 2;
@@ -1330,6 +1379,15 @@ void PairCellSPH::init_style()
                  "read_data",
                  HMODE_NAMES[hmode]);
   }
+
+  if (temp_set && !temp_name.empty()) {
+    temp_ivar = input->variable->find(temp_name.c_str());
+    if (temp_ivar < 0)
+      error->all(FLERR, "Pair style cell/sph: temp variable {} does not exist", temp_name);
+    if (!input->variable->equalstyle(temp_ivar))
+      error->all(FLERR, "Pair style cell/sph: temp variable {} is not equal-style", temp_name);
+  }
+  muscale = 1.0;
 
   const int n = atom->ntypes;
   viscous = 0;
@@ -1454,6 +1512,32 @@ double PairCellSPH::init_one(int i, int j)
   return cut_global > 0.0 ? cut_global : reach;
 }
 
+/* ----------------------------------------------------------------------
+   temp T: mu(T) = mu(Tref) mu_w(T)/mu_w(Tref) of every pair, mu_w from the Vogel equation of
+   liquid water (doc/model.md §5.9); T evaluated once per step (a variable may change it)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::update_viscosity()
+{
+  const double t = temp_name.empty() ? temp_value : input->variable->compute_equal(temp_ivar);
+  if (!vogel_range(t))
+    error->all(FLERR,
+               "Pair style cell/sph: temperature T = {} K (variable {}) on step {} is outside "
+               "{}-{} K (0-370 C), the range of the Vogel correlation of the viscosity of water",
+               t, temp_name.empty() ? "-" : temp_name, update->ntimestep, CellWater::VOGEL_TMIN,
+               CellWater::VOGEL_TMAX);
+  temperature = t;
+  // mu(T) / mu(Tref) = mu_w(T) / mu_w(Tref) (doc/model.md §5.9)
+  const double scale = CellWater::water_viscosity(t) / CellWater::water_viscosity(tref);
+  if (scale == muscale) return;
+  muscale = scale;
+  const int n = atom->ntypes;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++)
+      if (setflag[i][j] && !pc[i][j].boundary)
+        pc[i][j].mu2 = pc[j][i].mu2 = 2.0 * mu[i][j] * muscale;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void PairCellSPH::write_restart(FILE *fp)
@@ -1511,6 +1595,13 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&cut_global, sizeof(double), 1, fp);
   fwrite(&hmode, sizeof(int), 1, fp);
   fwrite(&eta, sizeof(double), 1, fp);
+  // version 4: temp (flag, number, variable name) and Tref
+  fwrite(&temp_set, sizeof(int), 1, fp);
+  fwrite(&temp_value, sizeof(double), 1, fp);
+  fwrite(&tref, sizeof(double), 1, fp);
+  const int len = static_cast<int>(temp_name.size());
+  fwrite(&len, sizeof(int), 1, fp);
+  if (len > 0) fwrite(temp_name.data(), sizeof(char), len, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1532,6 +1623,20 @@ void PairCellSPH::read_restart_settings(FILE *fp)
       utils::sfread(FLERR, &eta, sizeof(double), 1, fp, nullptr, error);
     }
   }
+  // temp and Tref from version 4 on; older files had none (mu as given)
+  int len = 0;
+  temp_set = 0;
+  temp_value = 0.0;
+  tref = TREF_DEFAULT;
+  std::vector<char> name;
+  if (comm->me == 0 && restart_version >= 4) {
+    utils::sfread(FLERR, &temp_set, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &temp_value, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &tref, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
+    name.resize(len);
+    if (len > 0) utils::sfread(FLERR, name.data(), sizeof(char), len, fp, nullptr, error);
+  }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -1539,6 +1644,15 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&hmode, 1, MPI_INT, 0, world);
   MPI_Bcast(&eta, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&temp_set, 1, MPI_INT, 0, world);
+  MPI_Bcast(&temp_value, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&tref, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&len, 1, MPI_INT, 0, world);
+  name.resize(len);
+  if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);
+  temp_name.assign(name.begin(), name.end());
+  temp_ivar = -1;
+  muscale = 1.0;
 }
 
 /* ----------------------------------------------------------------------

@@ -11,6 +11,7 @@
 #include "pair.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -53,6 +54,17 @@ class PairCellSPH : public Pair {
   double hdrift;        // h adaptive: largest relative change of h since the last density pass
 
   double **rho0, **bulk, **mu, **h;    // pair_coeff values per type pair
+
+  // pair_style keyword temp T [Tref T0]: every mu scaled by mu_w(T)/mu_w(Tref) of liquid water
+  // (doc/model.md §5.9); T a number or an equal-style variable evaluated once per step
+  int temp_set;             // 1 if pair_style has 'temp'
+  double temp_value;        // T (K) when it is a number
+  std::string temp_name;    // equal-style variable name of T (without v_), or empty
+  int temp_ivar;            // its index, from init_style()
+  double tref;              // reference temperature (K) of the pair_coeff mu, default 298.15
+  double muscale;           // mu_w(T)/mu_w(Tref) applied to pc[][].mu2, 1 without temp
+  double temperature;       // the T of the last evaluation (K)
+  void update_viscosity();
 
   struct PairConst {
     double cutsq;               // (kernel support)^2; 0 if the pair is not computed
