@@ -24,7 +24,7 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixCellPressure::FixCellPressure(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), pressure(0.0), ivar(-1), angle_type(1), work_local(0.0)
+    Fix(lmp, narg, arg), pressure(0.0), angle_type(1), work_local(0.0)
 {
   if (narg != 4 && narg != 6)
     error->all(FLERR,
@@ -35,7 +35,7 @@ FixCellPressure::FixCellPressure(LAMMPS *lmp, int narg, char **arg) :
                "Fix cell/pressure needs wall triangles stored as angles (atom_style angle, "
                "molecular or full)");
   if (strncmp(arg[3], "v_", 2) == 0)
-    varname = arg[3] + 2;
+    source.name = arg[3] + 2;
   else
     pressure = utils::numeric(FLERR, arg[3], false, lmp);
   if (narg == 6) {
@@ -63,11 +63,7 @@ int FixCellPressure::setmask()
 
 void FixCellPressure::init()
 {
-  if (varname.empty()) return;
-  ivar = input->variable->find(varname.c_str());
-  if (ivar < 0) error->all(FLERR, "Fix cell/pressure: variable {} does not exist", varname);
-  if (!input->variable->equalstyle(ivar))
-    error->all(FLERR, "Fix cell/pressure: variable {} is not equal-style", varname);
+  source.resolve(lmp, "Fix cell/pressure: variable");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -92,7 +88,7 @@ void FixCellPressure::min_pre_reverse(int eflag, int vflag)
 
 void FixCellPressure::pre_reverse(int, int)
 {
-  if (ivar >= 0) pressure = input->variable->compute_equal(ivar);
+  if (source.is_variable()) pressure = source.get(lmp);
 
   double **x = atom->x;
   double **f = atom->f;

@@ -6,6 +6,7 @@
 #ifndef LMP_FIX_CELL_PRESSURE_H
 #define LMP_FIX_CELL_PRESSURE_H
 
+#include "cell_quantity.h"
 #include "fix.h"
 
 #include <string>
@@ -24,10 +25,9 @@ class FixCellPressure : public Fix {
 
  protected:
   double pressure;        // Pa, or from an equal-style variable
-  std::string varname;    // empty if pressure is a constant
-  int ivar;
-  int angle_type;       // angle type of the wall triangles
-  double work_local;    // P V of the triangles this rank summed at the last force evaluation
+  CellQuantity source;    // P: a number or an equal-style variable
+  int angle_type;         // angle type of the wall triangles
+  double work_local;      // P V of the triangles this rank summed at the last force evaluation
 };
 
 }    // namespace LAMMPS_NS

@@ -240,7 +240,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                "C > 0 and 0 < K <= 1 (K > 1 diverges below a_w = 1)",
                gab_xm, gab_c, gab_k);
   // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
-  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : Quantity{tref, "", -1};
+  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : CellQuantity{tref, "", -1};
   if (accel_auto && drive == DRIVE_CURVE)
     error->all(FLERR,
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
@@ -312,26 +312,12 @@ int FixCellTurgor::parse_accel(int narg, char **arg, const std::string &command)
    a number or v_name; variables are looked up in init() (they may be defined after the fix)
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::parse_quantity(Quantity &in, const char *arg)
+void FixCellTurgor::parse_quantity(CellQuantity &in, const char *arg)
 {
   if (strncmp(arg, "v_", 2) == 0)
-    in = Quantity{0.0, arg + 2, -1};
+    in = CellQuantity{0.0, arg + 2, -1};
   else
-    in = Quantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
-}
-
-void FixCellTurgor::resolve(Quantity &in)
-{
-  if (in.name.empty()) return;
-  in.ivar = input->variable->find(in.name.c_str());
-  if (in.ivar < 0) error->all(FLERR, "Fix cell/turgor: variable {} does not exist", in.name);
-  if (!input->variable->equalstyle(in.ivar))
-    error->all(FLERR, "Fix cell/turgor: variable {} is not equal-style", in.name);
-}
-
-double FixCellTurgor::value(const Quantity &in)
-{
-  return in.name.empty() ? in.value : input->variable->compute_equal(in.ivar);
+    in = CellQuantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
 }
 
 /* ----------------------------------------------------------------------
@@ -398,8 +384,8 @@ void FixCellTurgor::init()
     if (state.find(cells->id(c)) == state.end()) {
       state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
     }
-  for (Quantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
-    resolve(*in);
+  for (CellQuantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
+    in->resolve(lmp, "Fix cell/turgor: variable");
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -471,7 +457,7 @@ void FixCellTurgor::evaluate(bool transfer)
 
   // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
   // X/X0(t) is evaluated at its end
-  const double t = value(temp);
+  const double t = temp.get(lmp);
   if (!(t > 0.0))
     error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0 (step {})", t,
                update->ntimestep);
@@ -480,10 +466,10 @@ void FixCellTurgor::evaluate(bool transfer)
   const double lpt = lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, tref) : 1.0);
   double psi_ext = 0.0, hm = 0.0, rho_sat = 0.0, rho_air = 0.0, target = 0.0;
   if (drive == DRIVE_PSI) {
-    psi_ext = value(psi);
+    psi_ext = psi.get(lmp);
   } else if (drive == DRIVE_AIR) {
-    const double tair = value(air_t), rh = value(air_rh);
-    hm = air_flow ? flow_transfer(tair, value(air_speed), value(air_length)) : value(air_hm);
+    const double tair = air_t.get(lmp), rh = air_rh.get(lmp);
+    hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
     mass_transfer = hm;
     check_air(tair, rh, hm);
     if (!(t < CellWater::CRITICAL_T))
@@ -497,7 +483,7 @@ void FixCellTurgor::evaluate(bool transfer)
     psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
   } else {
     if (transfer) physical_time += dtw;
-    target = value(curve);
+    target = curve.get(lmp);
     if (!(target > 0.0))
       error->all(FLERR, "Fix cell/turgor: curve X/X0 = {} must be > 0 (physical time {} s)", target,
                  physical_time);
@@ -904,7 +890,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
       error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
                  drive == DRIVE_AIR ? "air" : "curve");
     parse_quantity(psi, arg[1]);
-    resolve(psi);
+    psi.resolve(lmp, "Fix cell/turgor: variable");
   }
   return 2;
 }

@@ -7,6 +7,7 @@
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
+#include "cell_quantity.h"
 #include "fix.h"
 
 #include <map>
@@ -64,17 +65,11 @@ class FixCellTurgor : public Fix {
   // (t = position, y = P_T), the rate and conductance of its last transfer, sums over the sealed
   // window's samples
   enum Probe { Y0, ST, SY, STT, STY, SYY, RATE, COND, SY2, SYY2, NPROBE };
-  // a number, or an equal-style variable v_name evaluated at every transfer
-  struct Quantity {
-    double value;
-    std::string name;    // variable name, empty for a number
-    int ivar;
-  };
 
   double lp, pi0, rhow, accel;
   int drive;
-  Quantity psi, temp, air_t, air_rh, air_hm, curve;
-  Quantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
+  CellQuantity psi, temp, air_t, air_rh, air_hm, curve;
+  CellQuantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
   int air_flow;
   double area_fraction;      // share of the wall area in contact with the air
   double mass_transfer;      // h_m of the last evaluation (m/s)
@@ -114,9 +109,7 @@ class FixCellTurgor : public Fix {
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
   double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
-  void parse_quantity(Quantity &in, const char *arg);
-  void resolve(Quantity &in);
-  double value(const Quantity &in);
+  void parse_quantity(CellQuantity &in, const char *arg);
   void check_air(double t, double rh, double hm);
   double flow_transfer(double t, double u, double l);
 };

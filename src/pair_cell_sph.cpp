@@ -76,8 +76,6 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
 {
   restartinfo = 1;
   temp_set = 0;
-  temp_value = 0.0;
-  temp_ivar = -1;
   tref = TREF_DEFAULT;
   muscale = 1.0;
   temperature = 0.0;
@@ -1193,9 +1191,7 @@ void PairCellSPH::settings(int narg, char **arg)
   hmode = HFIXED;
   eta = 0.0;
   temp_set = 0;
-  temp_value = 0.0;
-  temp_name.clear();
-  temp_ivar = -1;
+  temp = CellQuantity();
   tref = TREF_DEFAULT;
   muscale = 1.0;
   if (narg > 0 && utils::is_double(arg[0])) {
@@ -1229,17 +1225,17 @@ void PairCellSPH::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "temp") == 0) {
       temp_set = 1;
       if (value.compare(0, 2, "v_") == 0) {
-        temp_name = value.substr(2);
-        if (temp_name.empty())
+        temp.name = value.substr(2);
+        if (temp.name.empty())
           error->all(FLERR, "Pair style cell/sph: temp '{}' names no variable", value);
       } else {
-        temp_name.clear();
-        temp_value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-        if (!vogel_range(temp_value))
+        temp.name.clear();
+        temp.value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+        if (!vogel_range(temp.value))
           error->all(FLERR,
                      "Pair style cell/sph: temperature T = {} K is outside {}-{} K (0-370 C), the "
                      "range of the Vogel correlation of the viscosity of water",
-                     temp_value, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
+                     temp.value, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
       }
     } else if (strcmp(arg[iarg], "Tref") == 0) {
       tref = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -1380,13 +1376,7 @@ void PairCellSPH::init_style()
                  HMODE_NAMES[hmode]);
   }
 
-  if (temp_set && !temp_name.empty()) {
-    temp_ivar = input->variable->find(temp_name.c_str());
-    if (temp_ivar < 0)
-      error->all(FLERR, "Pair style cell/sph: temp variable {} does not exist", temp_name);
-    if (!input->variable->equalstyle(temp_ivar))
-      error->all(FLERR, "Pair style cell/sph: temp variable {} is not equal-style", temp_name);
-  }
+  if (temp_set && !temp.name.empty()) { temp.resolve(lmp, "Pair style cell/sph: temp variable"); }
   muscale = 1.0;
 
   const int n = atom->ntypes;
@@ -1519,12 +1509,12 @@ double PairCellSPH::init_one(int i, int j)
 
 void PairCellSPH::update_viscosity()
 {
-  const double t = temp_name.empty() ? temp_value : input->variable->compute_equal(temp_ivar);
+  const double t = temp.get(lmp);
   if (!vogel_range(t))
     error->all(FLERR,
                "Pair style cell/sph: temperature T = {} K (variable {}) on step {} is outside "
                "{}-{} K (0-370 C), the range of the Vogel correlation of the viscosity of water",
-               t, temp_name.empty() ? "-" : temp_name, update->ntimestep, CellWater::VOGEL_TMIN,
+               t, temp.name.empty() ? "-" : temp.name, update->ntimestep, CellWater::VOGEL_TMIN,
                CellWater::VOGEL_TMAX);
   temperature = t;
   // mu(T) / mu(Tref) = mu_w(T) / mu_w(Tref) (doc/model.md §5.9)
@@ -1597,11 +1587,11 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&eta, sizeof(double), 1, fp);
   // version 4: temp (flag, number, variable name) and Tref
   fwrite(&temp_set, sizeof(int), 1, fp);
-  fwrite(&temp_value, sizeof(double), 1, fp);
+  fwrite(&temp.value, sizeof(double), 1, fp);
   fwrite(&tref, sizeof(double), 1, fp);
-  const int len = static_cast<int>(temp_name.size());
+  const int len = static_cast<int>(temp.name.size());
   fwrite(&len, sizeof(int), 1, fp);
-  if (len > 0) fwrite(temp_name.data(), sizeof(char), len, fp);
+  if (len > 0) fwrite(temp.name.data(), sizeof(char), len, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1626,12 +1616,12 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   // temp and Tref from version 4 on; older files had none (mu as given)
   int len = 0;
   temp_set = 0;
-  temp_value = 0.0;
+  temp.value = 0.0;
   tref = TREF_DEFAULT;
   std::vector<char> name;
   if (comm->me == 0 && restart_version >= 4) {
     utils::sfread(FLERR, &temp_set, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &temp_value, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &temp.value, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &tref, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
     name.resize(len);
@@ -1645,13 +1635,13 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&hmode, 1, MPI_INT, 0, world);
   MPI_Bcast(&eta, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&temp_set, 1, MPI_INT, 0, world);
-  MPI_Bcast(&temp_value, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&temp.value, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&tref, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);
-  temp_name.assign(name.begin(), name.end());
-  temp_ivar = -1;
+  temp.name.assign(name.begin(), name.end());
+  temp.ivar = -1;
   muscale = 1.0;
 }
 

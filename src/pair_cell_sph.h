@@ -8,6 +8,7 @@
 #define LMP_PAIR_CELL_SPH_H
 
 #include "cell_kernel.h"
+#include "cell_quantity.h"
 #include "pair.h"
 
 #include <array>
@@ -57,13 +58,11 @@ class PairCellSPH : public Pair {
 
   // pair_style keyword temp T [Tref T0]: every mu scaled by mu_w(T)/mu_w(Tref) of liquid water
   // (doc/model.md §5.9); T a number or an equal-style variable evaluated once per step
-  int temp_set;             // 1 if pair_style has 'temp'
-  double temp_value;        // T (K) when it is a number
-  std::string temp_name;    // equal-style variable name of T (without v_), or empty
-  int temp_ivar;            // its index, from init_style()
-  double tref;              // reference temperature (K) of the pair_coeff mu, default 298.15
-  double muscale;           // mu_w(T)/mu_w(Tref) applied to pc[][].mu2, 1 without temp
-  double temperature;       // the T of the last evaluation (K)
+  int temp_set;          // 1 if pair_style has 'temp'
+  CellQuantity temp;     // T (K): a number or an equal-style variable
+  double tref;           // reference temperature (K) of the pair_coeff mu, default 298.15
+  double muscale;        // mu_w(T)/mu_w(Tref) applied to pc[][].mu2, 1 without temp
+  double temperature;    // the T of the last evaluation (K)
   void update_viscosity();
 
   struct PairConst {
