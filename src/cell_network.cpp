@@ -15,12 +15,8 @@ void CellNetwork::set_edges(int ncell, std::vector<Edge> edges)
 {
   auto order = [](const Edge &a, const Edge &b) { return a.i < b.i || (a.i == b.i && a.j < b.j); };
   std::sort(edges.begin(), edges.end(), order);
-  auto pair = [](const Edge &a, const Edge &b) { return a.i == b.i && a.j == b.j; };
-  const bool same = ncell == n && edges.size() == graph.size() &&
-      std::equal(edges.begin(), edges.end(), graph.begin(), pair);
   n = ncell;
   graph = std::move(edges);
-  if (!same) analysed = false;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -49,7 +45,8 @@ double CellNetwork::stiffness(double dtw, const std::vector<double> &s) const
 /* ----------------------------------------------------------------------
    (I + C + dt_w L S) dM = dt_w (r - L psi), L the graph Laplacian of the g, S = diag(s), C the own
    transfer's factor z/(1 - e^-z) - 1 (an isolated cell takes its exponential Euler step), solved
-   in the symmetric form x = S^1/2 dM by sparse LDL^T; the exchange is then recomputed edge by
+   in the symmetric positive definite form x = S^1/2 dM by conjugate gradients with the diagonal
+   as preconditioner (to 1e-14 of the right-hand side); the exchange is then recomputed edge by
    edge from the end-of-step potentials psi + S dM and applied antisymmetrically, so that it sums
    to zero to round-off (doc/model.md §5.13)
 ------------------------------------------------------------------------- */
@@ -79,13 +76,13 @@ bool CellNetwork::step(double dtw, const Cells &cells, Change &change)
   for (int c = 0; c < n; c++) entries.emplace_back(c, c, diag[c]);
   system.resize(n, n);
   system.setFromTriplets(entries.begin(), entries.end());
-  if (!analysed) solver.analyzePattern(system);
-  analysed = true;
-  solver.factorize(system);
-  if (solver.info() != Eigen::Success) return false;
+  solver.setTolerance(1e-14);
+  solver.setMaxIterations(std::max(2 * n, 1000));
+  solver.compute(system);
   Eigen::VectorXd rhs(n);
   for (int c = 0; c < n; c++) rhs[c] = root[c] * b[c];
   const Eigen::VectorXd x = solver.solve(rhs);
+  last_iterations = (int) solver.iterations();
   if (solver.info() != Eigen::Success) return false;
 
   change.own.resize(n);

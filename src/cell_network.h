@@ -9,7 +9,8 @@
 #ifndef LMP_CELL_NETWORK_H
 #define LMP_CELL_NETWORK_H
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
 
 #include <vector>
 
@@ -36,7 +37,7 @@ class CellNetwork {
     double gross;    // sum over junctions of |water moved| (kg)
   };
 
-  // the junctions, sorted by (i, j) with i < j; a new set of pairs is analysed again
+  // the junctions, kept sorted by (i, j) with i < j
   void set_edges(int ncell, std::vector<Edge> edges);
   const std::vector<Edge> &edges() const { return graph; }
 
@@ -44,16 +45,16 @@ class CellNetwork {
   void rates(const std::vector<double> &psi, std::vector<double> &rate) const;
   // largest dt_w g_ij (s_i + s_j): the two-cell stiffness (an explicit step is unstable above 2)
   double stiffness(double dtw, const std::vector<double> &s) const;
-  // one implicit step over dt_w; false if the linear system could not be solved
+  // one implicit step over dt_w; false if the linear solver did not converge
   bool step(double dtw, const Cells &cells, Change &change);
+  int iterations() const { return last_iterations; }    // of the last step's solve
 
  private:
   using Matrix = Eigen::SparseMatrix<double>;
-  int n = 0;
+  int n = 0, last_iterations = 0;
   std::vector<Edge> graph;
-  Matrix system;
-  Eigen::SimplicialLDLT<Matrix, Eigen::Lower> solver;
-  bool analysed = false;
+  Matrix system;    // lower triangle of the symmetric system
+  Eigen::ConjugateGradient<Matrix, Eigen::Lower, Eigen::DiagonalPreconditioner<double>> solver;
 };
 
 }    // namespace LAMMPS_NS

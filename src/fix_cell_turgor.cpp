@@ -676,9 +676,10 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
 
   CellNetwork::Change change;
   if (!network->step(dtw, in, change))
-    error->all(FLERR,
-               "Fix cell/turgor: the water network's linear system could not be solved at step {}",
-               update->ntimestep);
+    error->all(
+        FLERR,
+        "Fix cell/turgor: the water network's solver did not converge at step {} ({} iterations)",
+        update->ntimestep, network->iterations());
   dmass.resize(n);
   exchange_net = 0.0;
   for (int c = 0; c < n; c++) {
