@@ -77,6 +77,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
 
   bool lp_set = false, pi0_set = false, temp_set = false;
   int bondtype = 0;
+  bool lcc_file = false;     // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
+  double file_lcc = -1.0;    // turgor_Lcc of the last 'file', -1 if none
   std::string measure = "wall", drives;
   int ndrive = 0;
   int iarg = 4;
@@ -180,8 +182,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR,
                    "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
                    v[0], v[1]);
-      parse_quantity(lcc, v[0]);
-      if (!lcc.is_variable() && lcc.value < 0.0)
+      lcc_file = strcmp(v[0], "file") == 0;
+      if (!lcc_file) parse_quantity(lcc, v[0]);
+      if (!lcc_file && !lcc.is_variable() && lcc.value < 0.0)
         error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0",
                    lcc.value);
       bondtype = utils::inumeric(FLERR, v[2], false, lmp);
@@ -215,6 +218,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       lp_set = pi0_set = true;
       // optional drying keys (doc/fix_cell_turgor.md)
       if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea");
+      if (params.has("turgor_Lcc")) file_lcc = params.nonnegative("turgor_Lcc");
       if (params.has("turgor_solids")) solids_fraction = params.positive("turgor_solids");
       if (params.has("turgor_gab_Xm") || params.has("turgor_gab_C") || params.has("turgor_gab_K")) {
         gab_xm = params.number("turgor_gab_Xm");
@@ -263,6 +267,13 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
                "flux that the mechanics could delay)");
 
+  if (lcc_file) {
+    if (file_lcc < 0.0)
+      error->all(FLERR,
+                 "Fix cell/turgor: 'exchange file' takes L_cc from the key turgor_Lcc of a "
+                 "parameter file: give 'file name' with that key");
+    lcc = CellQuantity{file_lcc, "", -1};
+  }
   if (bondtype && drive == DRIVE_CURVE)
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
