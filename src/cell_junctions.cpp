@@ -10,24 +10,81 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "tokenizer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
-#include <map>
-#include <utility>
 
 using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-CellJunctions::CellJunctions(LAMMPS *lmp, const std::string &command_in, int bondtype) :
-    Pointers(lmp), command(command_in), type(bondtype), area(0.0), counted(-1)
+CellJunctions::CellJunctions(LAMMPS *lmp, const std::string &command_in, int bondtype,
+                             const std::string &areas) :
+    Pointers(lmp),
+    command(command_in), type(bondtype), area(0.0), counted(-1), areas_file(areas)
 {
   if (!atom->molecular)
     error->all(FLERR, "{}: exchange needs bonds (atom_style angle or molecular)", command);
   if (type < 1 || type > atom->nbondtypes)
     error->all(FLERR, "{}: exchange bond type {} is out of range 1 to {}", command, type,
                atom->nbondtypes);
+  if (!areas_file.empty()) read_areas();
+}
+
+/* ----------------------------------------------------------------------
+   cellgen tissue .junctions: 'cell_i cell_j image_x image_y image_z area bonds' per face, from
+   each side; per pair of cells (lines with cell_i < cell_j, summed over the faces with bonds) the
+   contact area per bond. Read on rank 0, broadcast.
+------------------------------------------------------------------------- */
+
+void CellJunctions::read_areas()
+{
+  std::vector<double> flat;
+  if (comm->me == 0) {
+    FILE *fp = fopen(areas_file.c_str(), "r");
+    if (!fp) error->one(FLERR, "{}: cannot open the junction areas file {}", command, areas_file);
+    std::map<std::pair<tagint, tagint>, std::pair<double, double>> sums;
+    char line[1024];
+    int number = 0;
+    while (fgets(line, sizeof(line), fp)) {
+      number++;
+      const std::string text = utils::trim(line);
+      if (text.empty() || text[0] == '#') continue;
+      ValueTokenizer words(text);
+      tagint a = 0, b = 0;
+      double face = -1.0, bonds = -1.0;
+      try {
+        a = words.next_tagint();
+        b = words.next_tagint();
+        for (int k = 0; k < 3; k++) words.next_int();
+        face = words.next_double();
+        bonds = words.next_double();
+      } catch (TokenizerException &) {
+        a = 0;
+      }
+      if (a < 1 || b < 1 || a == b || !(face >= 0.0) || !(bonds >= 0.0) || words.has_next())
+        error->one(FLERR,
+                   "{}: {} line {} is not 'cell_i cell_j image_x image_y image_z area bonds' "
+                   "(cellgen tissue .junctions): {}",
+                   command, areas_file, number, text);
+      if (a > b || bonds == 0.0) continue;
+      auto &sum = sums[{a, b}];
+      sum.first += face;
+      sum.second += bonds;
+    }
+    fclose(fp);
+    for (const auto &kv : sums)
+      flat.insert(
+          flat.end(),
+          {(double) kv.first.first, (double) kv.first.second, kv.second.first / kv.second.second});
+  }
+  int n = (int) flat.size();
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  flat.resize(n);
+  MPI_Bcast(flat.data(), n, MPI_DOUBLE, 0, world);
+  for (int k = 0; k < n; k += 3) pair_area[{(tagint) flat[k], (tagint) flat[k + 1]}] = flat[k + 2];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -119,6 +176,19 @@ bool CellJunctions::gather(const std::vector<tagint> &ids, bool recount)
   std::map<std::pair<int, int>, int> merged;
   for (size_t k = 0; k < all.size(); k += 3) merged[{all[k], all[k + 1]}] += all[k + 2];
   list.clear();
-  for (const auto &kv : merged) list.push_back({kv.first.first, kv.first.second, kv.second});
+  for (const auto &kv : merged) {
+    const int a = kv.first.first, b = kv.first.second, bonds = kv.second;
+    double per = area;
+    if (!areas_file.empty()) {
+      auto it = pair_area.find({ids[a], ids[b]});
+      if (it == pair_area.end())
+        error->all(FLERR,
+                   "{}: junction bonds of type {} join cells {} and {}, which the junction areas "
+                   "file {} does not list",
+                   command, type, ids[a], ids[b], areas_file);
+      per = it->second;
+    }
+    list.push_back({a, b, bonds, bonds * per});
+  }
   return true;
 }

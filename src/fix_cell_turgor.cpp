@@ -77,6 +77,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
 
   bool lp_set = false, pi0_set = false, temp_set = false;
   int bondtype = 0;
+  std::string areas;         // 'exchange ... areas FILE'
   bool lcc_file = false;     // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
   double file_lcc = -1.0;    // turgor_Lcc of the last 'file', -1 if none
   std::string measure = "wall", drives;
@@ -189,6 +190,10 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                    lcc.value);
       bondtype = utils::inumeric(FLERR, v[2], false, lmp);
       used = 4;
+      if (iarg + 5 < narg && strcmp(arg[iarg + 4], "areas") == 0) {
+        areas = arg[iarg + 5];
+        used = 6;
+      }
     } else if (key == "accel") {
       used = 1 + parse_accel(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
     } else if (key == "bulk") {
@@ -285,7 +290,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
   if (bondtype) {
-    junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype);
+    junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
     network = std::make_unique<CellNetwork>();
   }
 
@@ -653,7 +658,8 @@ void FixCellTurgor::evaluate(bool transfer)
 /* ----------------------------------------------------------------------
    exchange: the cells' own transfer and the water between them through their junctions, one
    implicit step of the network over dtw (doc/model.md §5.13); dmass per cell with transfer, else
-   only the start-of-step rates and the stiffness. g_ij = rho_w L_cc A_ij, A_ij = bonds x A.
+   only the start-of-step rates and the stiffness. g_ij = rho_w L_cc A_ij, A_ij = its bonds x the
+   area per bond (the bond type's A, or the pair's from a junction areas file).
 ------------------------------------------------------------------------- */
 
 void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
@@ -669,8 +675,8 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
                l, update->ntimestep);
   std::vector<CellNetwork::Edge> edges;
   // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13)
-  const double g = rhow * l * factor * junctions->bond_area();
-  for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, g * j.bonds});
+  const double g = rhow * l * factor;
+  for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, g * j.area});
   network->set_edges(n, std::move(edges));
   for (int c = 0; c < n; c++)
     if (!(in.s[c] > 0.0))
