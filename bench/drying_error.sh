@@ -7,8 +7,8 @@
 # of each run. Prints a table. Points: "NWALL TSTEP" pairs, TSTEP = physical time per step (s) =
 # accel x dt; the first is the reference. Default:
 #   bench/drying_error.sh "1092 0.015" "1092 0.03" "642 0.03" "312 0.015" "312 0.03" "312 0.06"
-# Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying_cell/cell.lmp); any other
-# NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
+# Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying_cell/cell.lmp), 1092 the
+# seed (1624 asked for, 1647 placed); any other NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
 # dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
 # Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
@@ -28,7 +28,11 @@ cd "$work"
 for p in "${points[@]}"; do
   set -- $p
   nw=$1 tstep=$2 tag="n$1_t$2"
-  if [ "$nw" = 312 ]; then nf=450; else nf=$(python3 -c "print(round(1624 * ($nw / 1091) ** 1.5))"); fi
+  case $nw in
+    312) nf=450 ;;
+    1092) nf=1624 ;;    # the seed: cellgen's default (1091 asked for gives 1092)
+    *) nf=$(python3 -c "print(round(1624 * ($nw / 1091) ** 1.5))") ;;
+  esac
   "$build/tools/cellgen/cellgen" --nwall "$nw" --nfluid "$nf" --wall-mass 1e-12 --dihedrals --out "c$nw.data" >"cellgen$nw.log"
   # h and dt follow the fluid spacing, the contact size the wall spacing (the seed's: 1647 fluid
   # atoms, mean wall bond 8.62822 um)

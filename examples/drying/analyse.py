@@ -71,7 +71,7 @@ def near(cells, p, size):
 
 
 def stability(tag, reach, rs):
-    """per wall and fluid snapshot: step, the smallest and the mean fluid nearest-neighbour
+    """per wall and fluid snapshot: step, X/X0, the smallest and the mean fluid nearest-neighbour
     distance over dx = (M / (rho0 N))^(1/3), the spacing of N atoms at the water density with the
     fluid mass M of that moment (from M0 in log.TAG and the mass change of dry_TAG.dat), the share
     of fluid atoms within dx/2 of another, the share of wall atoms with fluid within reach"""
@@ -84,7 +84,8 @@ def stability(tag, reach, rs):
     for (step, wall), (_, fluid) in zip(snapshots(f"wall_{tag}.dump"), snapshots(f"fluid_{tag}.dump")):
         first = step if first is None else first
         t = (step - first) * tstep
-        dm = next((r["dMfluid"] for r in rs if r["t"] >= t - 1e-6 * tstep), rs[-1]["dMfluid"])
+        row = next((r for r in rs if r["t"] >= t - 1e-6 * tstep), rs[-1])
+        dm = row["dMfluid"]
         pts = list(fluid.values())
         dx = ((m0 + dm) / (1000.0 * len(pts))) ** (1 / 3)
         cells = grid(pts, 2.0 * dx)
@@ -93,7 +94,8 @@ def stability(tag, reach, rs):
         fcells = grid(pts, reach)
         held = sum(any(math.dist(w, q) < reach for q in near(fcells, w, reach))
                    for w in wall.values()) / len(wall)
-        out.append((step, min(nn), statistics.mean(nn), sum(d < 0.5 for d in nn) / len(nn), held))
+        out.append((step, row["X"], min(nn), statistics.mean(nn), sum(d < 0.5 for d in nn) / len(nn),
+                    held))
     return out
 
 
@@ -158,15 +160,15 @@ def main(tags):
         except (OSError, AttributeError):
             continue
         with open(f"stability_{tag}.txt", "w") as f:
-            f.write("# step nn_min/dx nn_mean/dx share_within_dx/2 wall_share_held\n")
+            f.write("# step X/X0 nn_min/dx nn_mean/dx share_within_dx/2 wall_share_held\n")
             for line in st:
-                f.write("%d %.4f %.4f %.4f %.4f\n" % line)
+                f.write("%d %.6f %.4f %.4f %.4f %.4f\n" % line)
         print(f"  fluid in tension ({len(st)} snapshots; dx = the spacing of the fluid mass at the "
-              f"water density): nearest-neighbour distance at the start min {st[0][1]:.2f} dx, mean "
-              f"{st[0][2]:.2f} dx; at the end min {st[-1][1]:.2f} dx, mean {st[-1][2]:.2f} dx; share of "
-              f"fluid atoms within dx/2 of another at most {max(x[3] for x in st):.3f} (at the end "
-              f"{st[-1][3]:.3f}); share of wall atoms with fluid within the adhesion reach at least "
-              f"{min(x[4] for x in st):.3f} (at the end {st[-1][4]:.3f})")
+              f"water density): nearest-neighbour distance at the start min {st[0][2]:.2f} dx, mean "
+              f"{st[0][3]:.2f} dx; at the end min {st[-1][2]:.2f} dx, mean {st[-1][3]:.2f} dx; share of "
+              f"fluid atoms within dx/2 of another at most {max(x[4] for x in st):.3f} (at the end "
+              f"{st[-1][4]:.3f}); share of wall atoms with fluid within the adhesion reach at least "
+              f"{min(x[5] for x in st):.3f} (at the end {st[-1][5]:.3f})")
 
 
 if __name__ == "__main__":

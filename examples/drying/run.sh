@@ -74,8 +74,9 @@ set xrange [1:0]
 set yrange [0:1.6]
 set ylabel 'relative to the turgid cell'
 set key bottom left
-set title 'section area'
-plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
+set title 'section area (z; thin: x, y)'
+plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', \
+     'dry_T70.dat' using 2:21 with lines lw 1 lc 1 notitle, 'dry_T70.dat' using 2:24 with lines lw 1 lc 1 notitle, '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
 0.2 0.4
 e
 set title 'perimeter'
@@ -89,6 +90,19 @@ e
 set title 'volume (wall-enclosed) and wrinkling'
 plot 'dry_T70.dat' using 2:7 with lines lw 2 title 'V/V0, 70 C', 'dry_T40.dat' using 2:7 with lines lw 2 title 'V/V0, 40 C', \
      'dry_T70.dat' using 2:14 with lines dt 2 lw 2 title 'wrinkling, 70 C', x with lines dt 3 lc rgb 'gray' title 'V/V0 = X/X0'
+unset multiplot
+set output 'fig_tension.png'
+set terminal pngcairo size 1400,600 noenhanced font ",11"
+set multiplot layout 1,2 title "The fluid in tension (analyse.py, stability_T*.txt): dx = spacing of the fluid mass at the water density"
+set yrange [0:1.05]
+set key bottom left
+set title 'fluid nearest-neighbour distance / dx'
+plot 'stability_T70.txt' using 2:3 with lines lw 2 title 'smallest, 70 C', 'stability_T70.txt' using 2:4 with lines lw 2 title 'mean, 70 C', \
+     'stability_T40.txt' using 2:3 with lines dt 2 title 'smallest, 40 C', 'stability_T40.txt' using 2:4 with lines dt 2 title 'mean, 40 C'
+set title 'clumping and the protoplast on the wall'
+plot 'stability_T70.txt' using 2:5 with lines lw 2 title 'share of fluid atoms within dx/2 of another, 70 C', \
+     'stability_T70.txt' using 2:6 with lines lw 2 title 'share of wall atoms with fluid within the adhesion reach, 70 C', \
+     'stability_T40.txt' using 2:5 with lines dt 2 title 'within dx/2, 40 C', 'stability_T40.txt' using 2:6 with lines dt 2 title 'held, 40 C'
 unset multiplot
 GP
 stamp "done; outputs in $out"
