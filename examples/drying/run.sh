@@ -6,13 +6,15 @@
 # through itself (tools/wall_self_intersection.py on every wall snapshot). Outputs in out/.
 # Needs the set-up of tools/setup.sh. The two temperatures run one after the other on NP ranks
 # (default 2; NP=1 was faster on a machine whose cores other jobs loaded). RES=coarse runs the
-# 312-particle wall instead of the seed's 1092. Measured 356 s with NP=1 on a loaded 2-core
+# 312-particle wall instead of the seed's 1092; ELONG=1.45 starts from a prolate cell (cellgen
+# --elongation) instead of the sphere. Measured 356 s with NP=1 on a loaded 2-core
 # machine (README.md).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
 np=${NP:-2}
 res=${RES:-seed}
+elong=${ELONG:-}    # ELONG=1.45: start from a prolate cell of that elongation (apple), the sphere's volume
 out=$here/out
 mkdir -p "$out"
 cd "$out"
@@ -25,14 +27,17 @@ if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$buil
 start=$(date +%s)
 stamp() { echo "[drying] $1 ($(($(date +%s) - start)) s)"; }
 
-# the cell: sphere of R0 = 75 um, icosahedral wall with one dihedral per edge (bending), wall
-# particles as heavy as fluid particles; h and dt follow the fluid spacing (h = 1.27 DX)
+# the cell: sphere of R0 = 75 um (or with ELONG a prolate spheroid along x of its volume),
+# icosahedral wall with one dihedral per edge (bending), wall particles as heavy as fluid
+# particles; h and dt follow the fluid spacing (h = 1.27 DX)
+shape=()
+[ -z "$elong" ] || shape=(--elongation "$elong")
 if [ "$res" = coarse ]; then
-  "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals --out cell.data >cellgen.log
+  "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals "${shape[@]}" --out cell.data >cellgen.log
   scale=(-var h 18.18e-6 -var dt 1.5e-8 -var ws 1.871 -var nup 6000)
   runs=("T70 343.15 2e6" "T40 313.15 8e6")
 else
-  "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals --out cell.data >cellgen.log
+  "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals "${shape[@]}" --out cell.data >cellgen.log
   scale=()
   runs=("T70 343.15 3e6" "T40 313.15 1.2e7")
 fi
@@ -94,7 +99,9 @@ unset multiplot
 set output 'fig_tension.png'
 set terminal pngcairo size 1400,600 noenhanced font ",11"
 set multiplot layout 1,2 title "The fluid in tension (analyse.py, stability_T*.txt): dx = spacing of the fluid mass at the water density"
+set xrange [1:0]
 set yrange [0:1.05]
+set xlabel 'X / X0'
 set key bottom left
 set title 'fluid nearest-neighbour distance / dx'
 plot 'stability_T70.txt' using 2:3 with lines lw 2 title 'smallest, 70 C', 'stability_T70.txt' using 2:4 with lines lw 2 title 'mean, 70 C', \
