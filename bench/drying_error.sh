@@ -11,7 +11,7 @@
 # seed (1624 asked for, 1647 placed); any other NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
 # dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
-# Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
+# XS="0.5 0.2" (default) are the X/X0 of the table. Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
 # the cores (note it with the table). WORK=dir keeps (and reuses) the runs there.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -43,7 +43,9 @@ nfluid = int(re.search(r"particles: (\d+) fluid", log).group(1))
 bond = float(re.search(r"wall bond length: min \S+, mean (\S+),", log).group(1))
 f = (1647 / nfluid) ** (1 / 3)
 dt = 1e-8 * f
-print(f"{12.2e-6 * f:.6g} {dt:.6g} {bond / 8.62822e-6:.6g} {round(12000 / f)} {float(sys.argv[2]) / dt:.6g}")
+# uptake steps a multiple of 500 (+ the 2000 sealed), so that the output intervals of drying end
+# on the run's last step
+print(f"{12.2e-6 * f:.6g} {dt:.6g} {bond / 8.62822e-6:.6g} {500 * round(24 / f)} {float(sys.argv[2]) / dt:.6g}")
 PY
   )
   if [ ! -s "final_$tag.txt" ]; then
@@ -54,9 +56,12 @@ PY
     echo "$((SECONDS - t0))" >"wall_$tag.txt"
   fi
 done
-python3 - "${points[@]}" <<'PY'
+XS=${XS:-0.5 0.2} python3 - "${points[@]}" <<'PY'
+import math
+import os
 import statistics
 import sys
+XS = [float(x) for x in os.environ["XS"].split()]
 COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid "
         "Ax Px Fx Ay Py Fy").split()
 def rows(tag):
@@ -72,20 +77,22 @@ def at(rs, x, key):
 def planes(rs, x, key):
     """mean and spread (standard deviation) over the sections x, y, z"""
     v = [at(rs, x, key + s) for s in ("x", "y", "")]
+    if any(math.isnan(a) for a in v):
+        return float("nan"), float("nan")
     return statistics.mean(v), statistics.pstdev(v)
 pts = [p.split() for p in sys.argv[1:]]
 tags = [f"n{n}_t{t}" for n, t in pts]
 data = {t: rows(t) for t in tags}
 ref = tags[0]
 print(f"reference: {pts[0][0]} wall particles, {pts[0][1]} s of physical time per step; values at "
-      "X/X0 = 0.5 and 0.2 relative to the turgid cell; A, P, F: mean +- spread of the sections "
+      f"X/X0 = {' and '.join(map(str, XS))} relative to the turgid cell; A, P, F: mean +- spread of the sections "
       "x, y, z through the centroid (error: of the mean)")
-head = [f"{k}@{x}" for x in (0.5, 0.2) for k in ("A", "P", "F", "V", "wrink")]
+head = [f"{k}@{x}" for x in XS for k in ("A", "P", "F", "V", "wrink")]
 print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock (s) |")
 print("|---" * (2 + len(head) + 2) + "|")
 for (n, ts), t in zip(pts, tags):
     vals, errs = [], []
-    for x in (0.5, 0.2):
+    for x in XS:
         for k in ("A", "P", "F", "V", "wrink"):
             if k in ("A", "P", "F"):
                 (v, s), (r, _) = planes(data[t], x, k), planes(data[ref], x, k)
