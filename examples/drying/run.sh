@@ -7,8 +7,9 @@
 # Needs the set-up of tools/setup.sh. The two temperatures run one after the other on NP ranks
 # (default 2; NP=1 was faster on a machine whose cores other jobs loaded). RES=coarse runs the
 # 312-particle wall instead of the seed's 1092; ELONG=1.45 starts from a prolate cell (cellgen
-# --elongation) instead of the sphere. Measured 356 s with NP=1 on a loaded 2-core
-# machine (README.md).
+# --elongation) instead of the sphere. Measured (README.md): RES=coarse NP=1 344 s on 2 cores
+# shared with about twenty other processes; the seed resolution takes about 160 s of CPU time per
+# temperature on one rank.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
@@ -102,6 +103,7 @@ set multiplot layout 1,2 title "The fluid in tension (analyse.py, stability_T*.t
 set xrange [1:0]
 set yrange [0:1.05]
 set xlabel 'X / X0'
+set ylabel ''
 set key bottom left
 set title 'fluid nearest-neighbour distance / dx'
 plot 'stability_T70.txt' using 2:3 with lines lw 2 title 'smallest, 70 C', 'stability_T70.txt' using 2:4 with lines lw 2 title 'mean, 70 C', \
