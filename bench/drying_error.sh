@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # Speed against error of the drying scene (examples/drying/in.drying, 70 C, RH 0.15): the section
-# descriptors (compute cell/shape plane z: area, perimeter, Feret, relative to the turgid cell), the
-# volume and the wrinkling at X/X0 = 0.5 and 0.2 of cheaper runs (coarser wall, larger accel)
-# against a reference run (finer and less accelerated), and the wall-clock of each run. Prints a
-# table. Points: "NWALL ACCEL" pairs; the first is the reference. Default:
-#   bench/drying_error.sh "1092 1.5e6" "1092 3e6" "312 1e6" "312 2e6" "312 4e6"
-# Each run is one LAMMPS run on NP ranks (default 2), a few minutes for the seed resolution on a
-# loaded machine; the wall-clock depends on what else runs on the cores (note it with the table).
+# descriptors (compute cell/shape: area, perimeter, Feret, relative to the turgid cell, each the
+# mean of the three sections x, y, z through the volume centroid, with their spread), the volume
+# and the wrinkling at X/X0 = 0.5 and 0.2 of cheaper runs (coarser wall, more physical time per
+# step) against a reference run (the first point: finer or less accelerated), and the wall-clock
+# of each run. Prints a table. Points: "NWALL TSTEP" pairs, TSTEP = physical time per step (s) =
+# accel x dt; the first is the reference. Default:
+#   bench/drying_error.sh "1092 0.015" "1092 0.03" "642 0.03" "312 0.015" "312 0.03" "312 0.06"
+# Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying_cell/cell.lmp), 1092 the
+# seed (1624 asked for, 1647 placed); any other NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
+# spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
+# dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
+# XS="0.5 0.2" (default) are the X/X0 of the table. Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
+# the cores (note it with the table). WORK=dir keeps (and reuses) the runs there.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -17,30 +23,47 @@ if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_
 export LAMMPS_POTENTIALS=$here/../potentials
 if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$build/bin/lmp"); fi
 points=("$@")
-[ ${#points[@]} -gt 0 ] || points=("1092 1.5e6" "1092 3e6" "312 1e6" "312 2e6" "312 4e6")
+[ ${#points[@]} -gt 0 ] || points=("1092 0.015" "1092 0.03" "642 0.03" "312 0.015" "312 0.03" "312 0.06")
 cd "$work"
 for p in "${points[@]}"; do
   set -- $p
-  nw=$1 acc=$2 tag="n$1_a$2"
-  if [ "$nw" = 312 ]; then
-    "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals --out "c$nw.data" >/dev/null
-    scale=(-var h 18.18e-6 -var dt 1.5e-8 -var ws 1.871 -var nup 6000)
-  elif [ "$nw" = 1092 ]; then
-    "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals --out "c$nw.data" >/dev/null
-    scale=()
-  else
-    echo "drying_error: NWALL 312 or 1092" >&2; exit 2
-  fi
+  nw=$1 tstep=$2 tag="n$1_t$2"
+  case $nw in
+    312) nf=450 ;;
+    1092) nf=1624 ;;    # the seed: cellgen's default (1091 asked for gives 1092)
+    *) nf=$(python3 -c "print(round(1624 * ($nw / 1091) ** 1.5))") ;;
+  esac
+  "$build/tools/cellgen/cellgen" --nwall "$nw" --nfluid "$nf" --wall-mass 1e-12 --dihedrals --out "c$nw.data" >"cellgen$nw.log"
+  # h and dt follow the fluid spacing, the contact size the wall spacing (the seed's: 1647 fluid
+  # atoms, mean wall bond 8.62822 um)
+  read -r h dt ws nup acc < <(python3 - "cellgen$nw.log" "$tstep" <<'PY'
+import re, sys
+log = open(sys.argv[1]).read()
+nfluid = int(re.search(r"particles: (\d+) fluid", log).group(1))
+bond = float(re.search(r"wall bond length: min \S+, mean (\S+),", log).group(1))
+f = (1647 / nfluid) ** (1 / 3)
+dt = 1e-8 * f
+# uptake steps a multiple of 500 (+ the 2000 sealed), so that the output intervals of drying end
+# on the run's last step
+print(f"{12.2e-6 * f:.6g} {dt:.6g} {bond / 8.62822e-6:.6g} {500 * round(24 / f)} {float(sys.argv[2]) / dt:.6g}")
+PY
+  )
   if [ ! -s "final_$tag.txt" ]; then
     t0=$SECONDS
-    "${lmp[@]}" -in "$here/../examples/drying/in.drying" -var data "c$nw.data" -var tag "$tag" -var accel "$acc" \
-      "${scale[@]}" -log "log.$tag" >"$tag.screen" || echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
+    "${lmp[@]}" -in "$here/../examples/drying/in.drying" -var data "c$nw.data" -var tag "$tag" \
+      -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" -var nup "$nup" \
+      -log "log.$tag" >"$tag.screen" || echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
     echo "$((SECONDS - t0))" >"wall_$tag.txt"
   fi
 done
-python3 - "${points[@]}" <<'PY'
+XS=${XS:-0.5 0.2} python3 - "${points[@]}" <<'PY'
+import math
+import os
+import statistics
 import sys
-COLS = "t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid".split()
+XS = [float(x) for x in os.environ["XS"].split()]
+COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid "
+        "Ax Px Fx Ay Py Fy").split()
 def rows(tag):
     with open(f"dry_{tag}.dat") as f:
         return [dict(zip(COLS, map(float, l.split()))) for l in f if not l.startswith("#")]
@@ -51,24 +74,39 @@ def at(rs, x, key):
             w = (a["X"] - x) / (a["X"] - b["X"])
             return a[key] + w * (b[key] - a[key])
     return rs[-1][key] if x >= rs[-1]["X"] - 1e-3 else float("nan")
+def planes(rs, x, key):
+    """mean and spread (standard deviation) over the sections x, y, z"""
+    v = [at(rs, x, key + s) for s in ("x", "y", "")]
+    if any(math.isnan(a) for a in v):
+        return float("nan"), float("nan")
+    return statistics.mean(v), statistics.pstdev(v)
 pts = [p.split() for p in sys.argv[1:]]
-tags = [f"n{n}_a{a}" for n, a in pts]
+tags = [f"n{n}_t{t}" for n, t in pts]
 data = {t: rows(t) for t in tags}
 ref = tags[0]
-keys = ("A", "P", "F", "V", "wrink")
-print(f"reference: {pts[0][0]} wall particles, accel {pts[0][1]}; values at X/X0 = 0.5 and 0.2 (section plane z, relative to the turgid cell)")
-print("| wall | accel | " + " | ".join(f"{k}@0.5" for k in keys) + " | " + " | ".join(f"{k}@0.2" for k in keys) + " | max err | wall-clock (s) |")
-print("|---" * (2 + 2 * len(keys) + 2) + "|")
-for (n, a), t in zip(pts, tags):
+print(f"reference: {pts[0][0]} wall particles, {pts[0][1]} s of physical time per step; values at "
+      f"X/X0 = {' and '.join(map(str, XS))} relative to the turgid cell; A, P, F: mean +- spread of the sections "
+      "x, y, z through the centroid (error: of the mean)")
+head = [f"{k}@{x}" for x in XS for k in ("A", "P", "F", "V", "wrink")]
+print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock (s) |")
+print("|---" * (2 + len(head) + 2) + "|")
+for (n, ts), t in zip(pts, tags):
     vals, errs = [], []
-    for x in (0.5, 0.2):
-        for k in keys:
-            v, r = at(data[t], x, k), at(data[ref], x, k)
-            vals.append(f"{v:.3f}" + ("" if t == ref else f" ({v / r - 1:+.1%})"))
+    for x in XS:
+        for k in ("A", "P", "F", "V", "wrink"):
+            if k in ("A", "P", "F"):
+                (v, s), (r, _) = planes(data[t], x, k), planes(data[ref], x, k)
+                txt = f"{v:.3f}±{s:.3f}"
+            else:
+                v, r = at(data[t], x, k), at(data[ref], x, k)
+                txt = f"{v:.3f}"
             if t != ref:
+                txt += f" ({v / r - 1:+.1%})"
                 errs.append(abs(v / r - 1))
+            vals.append(txt)
     with open(f"wall_{t}.txt") as f:
         wc = f.read().strip()
-    print(f"| {n} | {a} | " + " | ".join(vals) + f" | {max(errs):.1%} | {wc} |" if errs else f"| {n} | {a} | " + " | ".join(vals) + f" | (ref) | {wc} |")
+    err = f"{max(errs):.1%}" if errs else "(ref)"
+    print(f"| {n} | {ts} | " + " | ".join(vals) + f" | {err} | {wc} |")
 PY
 echo "runs in $work"

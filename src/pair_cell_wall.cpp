@@ -31,13 +31,14 @@ using MathSpecial::powint;
 static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact"};
 static const int TERM_VALUES[] = {2, 4, 2};    // required numbers after each keyword
 static constexpr int NTERMS = 3;
-static constexpr int NPARAM = 10;    // f0 r0 p1 p2 D alpha ra rc eps sigma
+static constexpr int NPARAM = 11;    // f0 r0 p1 p2 D alpha ra rc eps sigma smooth (version 3)
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
-static constexpr int RESTART_VERSION = 2;    // 2: the settings begin with -version (1: none)
+// 2: the settings begin with -version (1: none); 3: the adhesion's smooth flag after sigma
+static constexpr int RESTART_VERSION = 3;
 
 static const char *const COEFF_USAGE =
-    "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] "
+    "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] "
     "[contact eps sigma]', 'pair_coeff I J none' or 'pair_coeff I J file <parameter file> "
     "wallfluid|wallwall'";
 
@@ -60,8 +61,8 @@ static inline double ratio_power(double s, double p, int half)
 /* ---------------------------------------------------------------------- */
 
 PairCellWall::PairCellWall(LAMMPS *lmp) :
-    Pair(lmp), cut_global(0.0), coeffs(nullptr), load_fluid(0), load_wall(0), nmax_load(0),
-    load(nullptr)
+    Pair(lmp), cut_global(0.0), coeffs(nullptr), restart_version(RESTART_VERSION), load_fluid(0),
+    load_wall(0), nmax_load(0), load(nullptr)
 {
   writedata = 1;
   comm_reverse = 3;
@@ -246,15 +247,17 @@ inline double PairCellWall::evaluate(const Coeff &c, double rsq, int eflag, doub
 
   if (c.terms & ADHESION) {
     if (rsq < c.rasq) {
-      // no force inside ra; U stays at the well bottom -D - U_M(rc)
+      // no force inside ra; U stays at the well bottom U(ra)
       if (eflag) u += c.u_below_ra;
     } else if (rsq < c.rcsq) {
       const double r = sqrt(rsq);
-      const double e = exp(-c.alpha * (r - c.ra));
-      // F = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0, attractive (doc/model.md §3.7)
-      fpair += c.two_alpha_d * e * (e - 1.0) / r;
-      // U = U_M(r) - U_M(rc), U_M(r) = D [e^-2alpha(r-ra) - 2 e^-alpha(r-ra)]
-      if (eflag) u += c.D * e * (e - 2.0) - c.u_rc;
+      const double dr = r - c.ra;
+      const double e = exp(-c.alpha * dr);
+      // F = F_M(r) - taper (r - ra), F_M = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0
+      // (attractive), taper = F_M(rc)/(rc - ra) if smooth, else 0 (doc/model.md §3.7)
+      fpair += (c.two_alpha_d * e * (e - 1.0) - c.taper * dr) / r;
+      // U = U_M(r) + taper (r - ra)^2 / 2 - u_rc, U_M(r) = D [e^-2alpha(r-ra) - 2 e^-alpha(r-ra)]
+      if (eflag) u += c.D * e * (e - 2.0) + 0.5 * c.taper * dr * dr - c.u_rc;
     }
   }
 
@@ -298,7 +301,7 @@ void PairCellWall::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] [contact eps sigma]
+   pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] [contact eps sigma]
    pair_coeff I J none
    pair_coeff I J file <parameter file> wallfluid|wallwall
 ------------------------------------------------------------------------- */
@@ -359,6 +362,10 @@ void PairCellWall::coeff(int narg, char **arg)
         c.alpha = v[1];
         c.ra = v[2];
         c.rc = v[3];
+        if (iarg < narg && strcmp(arg[iarg], "smooth") == 0) {
+          c.smooth = 1;
+          iarg++;
+        }
       } else {
         c.eps = v[0];
         c.sigma = v[1];
@@ -405,6 +412,15 @@ void PairCellWall::read_file(Coeff &c, const char *file, const char *which)
       c.alpha = params.positive("adhesion_alpha");
       c.ra = params.nonnegative("adhesion_ra");
       c.rc = params.positive("adhesion_rc");
+      if (params.has("adhesion_smooth")) {
+        const double smooth = params.number("adhesion_smooth");
+        if (smooth != 0.0 && smooth != 1.0)
+          error->all(FLERR,
+                     "Pair_coeff cell/wall: adhesion_smooth = {} in {} must be 0 (force cut at "
+                     "rc) or 1 (force tapered to zero at rc)",
+                     smooth, file);
+        c.smooth = (int) smooth;
+      }
     }
   } else {
     c.terms = CONTACT;
@@ -495,9 +511,12 @@ double PairCellWall::init_one(int i, int j)
     c.rasq = c.ra * c.ra;
     c.rcsq = c.rc * c.rc;
     c.two_alpha_d = 2.0 * c.alpha * c.D;
-    const double ec = exp(-c.alpha * (c.rc - c.ra));
-    // U_M(rc) = D [e^-2alpha(rc-ra) - 2 e^-alpha(rc-ra)]; U inside ra = U_M(ra) - U_M(rc)
-    c.u_rc = c.D * ec * (ec - 2.0);
+    const double drc = c.rc - c.ra;
+    const double ec = exp(-c.alpha * drc);
+    // smooth: taper = F_M(rc) / (rc - ra), so that F(rc) = 0 (doc/model.md §3.7)
+    c.taper = c.smooth ? c.two_alpha_d * ec * (ec - 1.0) / drc : 0.0;
+    // u_rc = U_M(rc) + taper (rc - ra)^2 / 2, so U(rc) = 0; inside ra U = U(ra) = -D - u_rc
+    c.u_rc = c.D * ec * (ec - 2.0) + 0.5 * c.taper * drc * drc;
     c.u_below_ra = -c.D - c.u_rc;
     if (c.rc > cut) {
       cut = c.rc;
@@ -533,7 +552,8 @@ void PairCellWall::write_restart(FILE *fp)
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (setflag[i][j]) {
         const Coeff &c = coeffs[i][j];
-        const double v[NPARAM] = {c.f0, c.r0, c.p1, c.p2, c.D, c.alpha, c.ra, c.rc, c.eps, c.sigma};
+        const double v[NPARAM] = {
+            c.f0, c.r0, c.p1, c.p2, c.D, c.alpha, c.ra, c.rc, c.eps, c.sigma, (double) c.smooth};
         fwrite(&c.terms, sizeof(int), 1, fp);
         fwrite(v, sizeof(double), NPARAM, fp);
       }
@@ -553,13 +573,15 @@ void PairCellWall::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j]) {
         int terms = 0;
-        double v[NPARAM];
+        double v[NPARAM] = {};
+        // versions 1 and 2 end each pair at sigma (no smooth flag: a cut adhesion)
+        const int nparam = restart_version >= 3 ? NPARAM : NPARAM - 1;
         if (me == 0) {
           utils::sfread(FLERR, &terms, sizeof(int), 1, fp, nullptr, error);
-          utils::sfread(FLERR, v, sizeof(double), NPARAM, fp, nullptr, error);
+          utils::sfread(FLERR, v, sizeof(double), nparam, fp, nullptr, error);
         }
         MPI_Bcast(&terms, 1, MPI_INT, 0, world);
-        MPI_Bcast(v, NPARAM, MPI_DOUBLE, 0, world);
+        MPI_Bcast(v, nparam, MPI_DOUBLE, 0, world);
         Coeff c = {};
         c.terms = terms;
         c.f0 = v[0];
@@ -572,6 +594,7 @@ void PairCellWall::read_restart(FILE *fp)
         c.rc = v[7];
         c.eps = v[8];
         c.sigma = v[9];
+        c.smooth = (int) v[10];
         coeffs[i][j] = c;
       }
     }
@@ -590,11 +613,11 @@ void PairCellWall::write_restart_settings(FILE *fp)
 void PairCellWall::read_restart_settings(FILE *fp)
 {
   double first = 0.0;
-  const int version =
+  restart_version =
       CellRestart::read_version(lmp, fp, FLERR, "Pair cell/wall", RESTART_VERSION, &first);
   // version 1: the value read was the cutoff
   cut_global = first;
-  if (version >= 2) CellRestart::read_columns(lmp, fp, 1, &cut_global);
+  if (restart_version >= 2) CellRestart::read_columns(lmp, fp, 1, &cut_global);
 }
 
 /* ----------------------------------------------------------------------
@@ -605,7 +628,9 @@ std::string PairCellWall::describe(const Coeff &c) const
 {
   std::string s;
   if (c.terms & REPULSION) s += fmt::format(" repulsion {} {} {} {}", c.f0, c.r0, c.p1, c.p2);
-  if (c.terms & ADHESION) s += fmt::format(" adhesion {} {} {} {}", c.D, c.alpha, c.ra, c.rc);
+  if (c.terms & ADHESION)
+    s +=
+        fmt::format(" adhesion {} {} {} {}{}", c.D, c.alpha, c.ra, c.rc, c.smooth ? " smooth" : "");
   if (c.terms & CONTACT) s += fmt::format(" contact {} {}", c.eps, c.sigma);
   return s.empty() ? " none" : s;
 }

@@ -45,14 +45,16 @@ class PairCellWall : public Pair {
     int terms;                  // bitmask of Term
     double f0, r0, p1, p2;      // repulsion
     double D, alpha, ra, rc;    // adhesion
+    int smooth;                 // adhesion force tapered to zero at rc (1) or cut there (0)
     double eps, sigma;          // contact
     int half1, half2;           // p1/2, p2/2 when they are integers (powint), else 0
-    double r0sq, rasq, rcsq, two_alpha_d, u_rc, u_below_ra, sigsq, contactsq;
+    double r0sq, rasq, rcsq, two_alpha_d, taper, u_rc, u_below_ra, sigsq, contactsq;
   };
 
  protected:
   double cut_global;
   Coeff **coeffs;
+  int restart_version;          // format version of the restart file being read
   int load_fluid, load_wall;    // atom types of a wall-load request, 0 = none
   int nmax_load;
   double **load;

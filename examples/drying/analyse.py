@@ -1,14 +1,22 @@
 #!/usr/bin/env python3
 """Summary of the drying example (run by run.sh in out/): for each run TAG (dry_TAG.dat,
-tlp_TAG.txt, intersections_TAG.txt, log.TAG) the drying time, the turgor loss point, the section
-descriptors and volume at X/X0 = 0.5 and at the end against Karunasena et al. 2014 (dried Gala
+tlp_TAG.txt, intersections_TAG.txt, log.TAG, wall_TAG.dump, fluid_TAG.dump) the drying time, the
+turgor loss point, the section descriptors (the mean and spread of the sections x, y, z through
+the centroid) and volume at X/X0 = 0.5 and at the end against Karunasena et al. 2014 (dried Gala
 apple: area -60 %, Feret -40 %, perimeter -30 %, roundness and elongation +5 %, compactness
-unchanged), and the checks: fluid outside the wall, wall self-intersections, water accounting."""
+unchanged), the checks: fluid outside the wall, wall self-intersections, water accounting, and
+the fluid in tension (stability.TAG.txt, one line per snapshot): the nearest-neighbour distance of
+the fluid atoms (min and mean, and the share of atoms within half the mean of another: clumping
+by the tensile instability) and the share of wall atoms with a fluid atom within the adhesion's
+reach (the protoplast held on the wall)."""
+import math
 import re
+import statistics
 import sys
 
 # columns of dry_TAG.dat (in.drying)
-COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid").split()
+COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid "
+        "Ax Px Fx Ay Py Fy").split()
 APPLE = {"A": 0.4, "P": 0.7, "F": 0.6}
 
 
@@ -23,6 +31,80 @@ def at(rs, x):
         if r["X"] <= x:
             return r
     return rs[-1]
+
+
+def planes(r, key):
+    """mean and spread (standard deviation) of a descriptor over the sections x, y, z"""
+    v = [r[key + s] for s in ("x", "y", "")]
+    return statistics.mean(v), statistics.pstdev(v)
+
+
+def snapshots(path):
+    """(step, {id: (x, y, z)}) of each snapshot of a LAMMPS dump 'id x y z'"""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    k = 0
+    while k < len(lines) and lines[k].startswith("ITEM: TIMESTEP"):
+        step, n = int(lines[k + 1]), int(lines[k + 3])
+        atoms = {}
+        for line in lines[k + 9:k + 9 + n]:
+            i, x, y, z = line.split()
+            atoms[int(i)] = (float(x), float(y), float(z))
+        yield step, atoms
+        k += 9 + n
+
+
+def grid(points, size):
+    cells = {}
+    for p in points:
+        cells.setdefault(tuple(math.floor(c / size) for c in p), []).append(p)
+    return cells
+
+
+def near(cells, p, size):
+    """the points of the 27 grid cells around p"""
+    c = [math.floor(v / size) for v in p]
+    for dx in (-1, 0, 1):
+        for dy in (-1, 0, 1):
+            for dz in (-1, 0, 1):
+                yield from cells.get((c[0] + dx, c[1] + dy, c[2] + dz), ())
+
+
+def stability(tag, reach, rs):
+    """per wall and fluid snapshot: step, X/X0, the smallest and the mean fluid nearest-neighbour
+    distance over dx = (M / (rho0 N))^(1/3), the spacing of N atoms at the water density with the
+    fluid mass M of that moment (from M0 in log.TAG and the mass change of dry_TAG.dat), the share
+    of fluid atoms within dx/2 of another, the share of wall atoms with fluid within reach"""
+    with open(f"dry_{tag}.dat") as f:
+        head = f.readline()
+    tstep = float(re.search(r"accel (\S+),", head).group(1)) * float(re.search(r"dt (\S+),", head).group(1))
+    with open(f"log.{tag}") as f:
+        m0 = float(re.search(r"turgid cell: M0 = ([0-9.eE+-]+) kg", f.read()).group(1))
+    out, first = [], None
+    for (step, wall), (_, fluid) in zip(snapshots(f"wall_{tag}.dump"), snapshots(f"fluid_{tag}.dump")):
+        first = step if first is None else first
+        t = (step - first) * tstep
+        row = next((r for r in rs if r["t"] >= t - 1e-6 * tstep), rs[-1])
+        dm = row["dMfluid"]
+        pts = list(fluid.values())
+        dx = ((m0 + dm) / (1000.0 * len(pts))) ** (1 / 3)
+        cells = grid(pts, 2.0 * dx)
+        nn = [min(min((math.dist(p, q) for q in near(cells, p, 2.0 * dx) if q is not p),
+                      default=2.0 * dx), 2.0 * dx) / dx for p in pts]
+        fcells = grid(pts, reach)
+        held = sum(any(math.dist(w, q) < reach for q in near(fcells, w, reach))
+                   for w in wall.values()) / len(wall)
+        out.append((step, row["X"], min(nn), statistics.mean(nn), sum(d < 0.5 for d in nn) / len(nn),
+                    held))
+    return out
+
+
+def reach_of(tag):
+    """the adhesion's reach rc = h/2.5 + well h from the run's log"""
+    with open(f"log.{tag}") as f:
+        m = re.search(r"pair_coeff 1 2 cell/wall adhesion [0-9.eE+-]+ [0-9.eE+-]+ [0-9.eE+-]+ ([0-9.eE+-]+)",
+                      f.read())
+    return float(m.group(1))
 
 
 def first_line(path, default="n/a"):
@@ -56,10 +138,15 @@ def main(tags):
               f"(X = {end['X_db']:.3f} kg/kg); wall-clock {wall_time(tag)} s")
         if tlp != "n/a":
             print(f"  turgor loss point (P_T <= 0): X/X0 = {float(tlp[1]):.3f} at {float(tlp[0]) / 60:.1f} min")
-        print("  quantity          X/X0=0.5   end    apple (Karunasena 2014, dried)")
+        print("  quantity          X/X0=0.5   end    apple (Karunasena 2014, dried)   sections x, y, z")
         for key, name in (("A", "section area"), ("P", "perimeter"), ("F", "Feret"), ("V", "volume")):
             ref = f"{APPLE[key]:.2f}" if key in APPLE else "-"
-            print(f"  {name:16s}  {half[key]:8.3f}  {end[key]:6.3f}   {ref}")
+            if key in APPLE:
+                (hm, hs), (em, es) = planes(half, key), planes(end, key)
+                print(f"  {name:16s}  {hm:.3f}±{hs:.3f}  {em:.3f}±{es:.3f}   {ref}"
+                      f"   {end[key + 'x']:.3f} {end[key + 'y']:.3f} {end[key]:.3f}")
+            else:
+                print(f"  {name:16s}  {half[key]:8.3f}  {end[key]:6.3f}   {ref}")
         for key, name in (("round", "roundness"), ("elong", "elongation"), ("compact", "compactness")):
             print(f"  {name:16s}  {half[key] / r0[key]:8.3f}  {end[key] / r0[key]:6.3f}   "
                   f"{'1.05' if key != 'compact' else '1.00'}  (relative to the start)")
@@ -68,6 +155,20 @@ def main(tags):
         print(f"  checks: fluid atoms outside the wall at most {max(r['out'] for r in rs):.0f}; "
               f"wall self-intersections at most {inter[0] if inter != 'n/a' else 'n/a'} triangle pairs; "
               f"|water moved - fluid mass change| / water lost at most {acct:.1e}")
+        try:
+            st = stability(tag, reach_of(tag), rs)
+        except (OSError, AttributeError):
+            continue
+        with open(f"stability_{tag}.txt", "w") as f:
+            f.write("# step X/X0 nn_min/dx nn_mean/dx share_within_dx/2 wall_share_held\n")
+            for line in st:
+                f.write("%d %.6f %.4f %.4f %.4f %.4f\n" % line)
+        print(f"  fluid in tension ({len(st)} snapshots; dx = the spacing of the fluid mass at the "
+              f"water density): nearest-neighbour distance at the start min {st[0][2]:.2f} dx, mean "
+              f"{st[0][3]:.2f} dx; at the end min {st[-1][2]:.2f} dx, mean {st[-1][3]:.2f} dx; share of "
+              f"fluid atoms within dx/2 of another at most {max(x[4] for x in st):.3f} (at the end "
+              f"{st[-1][4]:.3f}); share of wall atoms with fluid within the adhesion reach at least "
+              f"{min(x[5] for x in st):.3f} (at the end {st[-1][5]:.3f})")
 
 
 if __name__ == "__main__":

@@ -6,13 +6,16 @@
 # through itself (tools/wall_self_intersection.py on every wall snapshot). Outputs in out/.
 # Needs the set-up of tools/setup.sh. The two temperatures run one after the other on NP ranks
 # (default 2; NP=1 was faster on a machine whose cores other jobs loaded). RES=coarse runs the
-# 312-particle wall instead of the seed's 1092. Measured 356 s with NP=1 on a loaded 2-core
-# machine (README.md).
+# 312-particle wall instead of the seed's 1092; ELONG=1.45 starts from a prolate cell (cellgen
+# --elongation) instead of the sphere. Measured (README.md): RES=coarse NP=1 344 s on 2 cores
+# shared with about twenty other processes; the seed resolution takes about 160 s of CPU time per
+# temperature on one rank.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
 np=${NP:-2}
 res=${RES:-seed}
+elong=${ELONG:-}    # ELONG=1.45: start from a prolate cell of that elongation (apple), the sphere's volume
 out=$here/out
 mkdir -p "$out"
 cd "$out"
@@ -25,14 +28,17 @@ if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$buil
 start=$(date +%s)
 stamp() { echo "[drying] $1 ($(($(date +%s) - start)) s)"; }
 
-# the cell: sphere of R0 = 75 um, icosahedral wall with one dihedral per edge (bending), wall
-# particles as heavy as fluid particles; h and dt follow the fluid spacing (h = 1.27 DX)
+# the cell: sphere of R0 = 75 um (or with ELONG a prolate spheroid along x of its volume),
+# icosahedral wall with one dihedral per edge (bending), wall particles as heavy as fluid
+# particles; h and dt follow the fluid spacing (h = 1.27 DX)
+shape=()
+[ -z "$elong" ] || shape=(--elongation "$elong")
 if [ "$res" = coarse ]; then
-  "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals --out cell.data >cellgen.log
+  "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals "${shape[@]}" --out cell.data >cellgen.log
   scale=(-var h 18.18e-6 -var dt 1.5e-8 -var ws 1.871 -var nup 6000)
   runs=("T70 343.15 2e6" "T40 313.15 8e6")
 else
-  "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals --out cell.data >cellgen.log
+  "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals "${shape[@]}" --out cell.data >cellgen.log
   scale=()
   runs=("T70 343.15 3e6" "T40 313.15 1.2e7")
 fi
@@ -74,8 +80,9 @@ set xrange [1:0]
 set yrange [0:1.6]
 set ylabel 'relative to the turgid cell'
 set key bottom left
-set title 'section area'
-plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
+set title 'section area (z; thin: x, y)'
+plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', \
+     'dry_T70.dat' using 2:21 with lines lw 1 lc 1 notitle, 'dry_T70.dat' using 2:24 with lines lw 1 lc 1 notitle, '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
 0.2 0.4
 e
 set title 'perimeter'
@@ -89,6 +96,22 @@ e
 set title 'volume (wall-enclosed) and wrinkling'
 plot 'dry_T70.dat' using 2:7 with lines lw 2 title 'V/V0, 70 C', 'dry_T40.dat' using 2:7 with lines lw 2 title 'V/V0, 40 C', \
      'dry_T70.dat' using 2:14 with lines dt 2 lw 2 title 'wrinkling, 70 C', x with lines dt 3 lc rgb 'gray' title 'V/V0 = X/X0'
+unset multiplot
+set output 'fig_tension.png'
+set terminal pngcairo size 1400,600 noenhanced font ",11"
+set multiplot layout 1,2 title "The fluid in tension (analyse.py, stability_T*.txt): dx = spacing of the fluid mass at the water density"
+set xrange [1:0]
+set yrange [0:1.05]
+set xlabel 'X / X0'
+set ylabel ''
+set key bottom left
+set title 'fluid nearest-neighbour distance / dx'
+plot 'stability_T70.txt' using 2:3 with lines lw 2 title 'smallest, 70 C', 'stability_T70.txt' using 2:4 with lines lw 2 title 'mean, 70 C', \
+     'stability_T40.txt' using 2:3 with lines dt 2 title 'smallest, 40 C', 'stability_T40.txt' using 2:4 with lines dt 2 title 'mean, 40 C'
+set title 'clumping and the protoplast on the wall'
+plot 'stability_T70.txt' using 2:5 with lines lw 2 title 'share of fluid atoms within dx/2 of another, 70 C', \
+     'stability_T70.txt' using 2:6 with lines lw 2 title 'share of wall atoms with fluid within the adhesion reach, 70 C', \
+     'stability_T40.txt' using 2:5 with lines dt 2 title 'within dx/2, 40 C', 'stability_T40.txt' using 2:6 with lines dt 2 title 'held, 40 C'
 unset multiplot
 GP
 stamp "done; outputs in $out"
