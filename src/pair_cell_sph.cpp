@@ -69,10 +69,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
     dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), gamma_min(0.25),
     phidq(0.0), deficit(nullptr), wallload(nullptr), tricount(nullptr), trifirst(nullptr),
-    edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr), slot(nullptr), refreshing(1),
-    refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
-    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
-    pairmu(nullptr), maxfirst(0), maxpairs(0)
+    edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr),
+    slot(nullptr), refreshing(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0),
+    prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
+    pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -401,6 +401,8 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(trifirst);
   memory->destroy(deficit0);
   memory->destroy(xbase);
+  memory->destroy(gradsum);
+  memory->destroy(disp);
   memory->destroy(slot);
   memory->destroy(hscale);
   memory->destroy(dsum);
@@ -431,6 +433,8 @@ void PairCellSPH::grow_peratom()
   memory->create(trifirst, nmax, "pair:trifirst");
   memory->create(deficit0, nmax, "pair:deficit0");
   memory->create(xbase, nmax, 3, "pair:xbase");
+  memory->create(gradsum, nmax, 3, "pair:gradsum");
+  memory->create(disp, nmax, 3, "pair:disp");
   memory->create(slot, nmax, "pair:slot");
   for (int i = 0; i < nmax; i++) slot[i] = -1;
 }
@@ -755,11 +759,21 @@ void PairCellSPH::merge_terms()
     for (int k = start; k < static_cast<int>(merged.size()); k++) slot[merged[k].v] = -1;
   }
   terms.swap(merged);
+  // the terms of fluid atom f are terms[termfirst[f]] .. terms[termfirst[f + 1] - 1], and
+  // gradsum[f] = sum_v grad_v D_f = -grad_f D_f
+  termfirst.assign(nall + 1, 0);
+  for (const Term &tm : terms) termfirst[tm.f + 1]++;
+  for (int i = 0; i < nall; i++) termfirst[i + 1] += termfirst[i];
   double **x = atom->x;
   for (int i = 0; i < nall; i++) {
     deficit0[i] = deficit[i];
-    for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
+    for (int d = 0; d < 3; d++) {
+      xbase[i][d] = x[i][d];
+      gradsum[i][d] = 0.0;
+    }
   }
+  for (const Term &tm : terms)
+    for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
   if (hmode != HFIXED) {
     const double *hv = atom->dvector[ih];
     for (int i = 0; i < nall; i++) {
@@ -771,27 +785,29 @@ void PairCellSPH::merge_terms()
 
 /* ----------------------------------------------------------------------
    between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f)
-   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base
-   (grad_f D_f = -sum_v grad_v D_f)
+   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base, summed as
+   D_f(base) - gradsum_f . dx_f + sum_v grad_v D_f . dx_v (grad_f D_f = -gradsum_f)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::linear_deficit()
 {
   double **x = atom->x;
   const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
+    for (int d = 0; d < 3; d++) disp[i][d] = x[i][d] - xbase[i][d];
+    deficit[i] = deficit0[i] -
+        (gradsum[i][0] * disp[i][0] + gradsum[i][1] * disp[i][1] + gradsum[i][2] * disp[i][2]);
+  }
   if (hmode != HFIXED) {
     const double *hv = atom->dvector[ih];
     for (int i = 0; i < nall; i++) {
       dhdef[i] = dhdef0[i];
-      deficit[i] = deficit0[i] + dhdef0[i] * (hv[i] - hbase[i]);
+      deficit[i] += dhdef0[i] * (hv[i] - hbase[i]);
     }
-  } else {
-    for (int i = 0; i < nall; i++) deficit[i] = deficit0[i];
   }
   for (const Term &tm : terms) {
-    const double *xv = x[tm.v], *xf = x[tm.f], *bv = xbase[tm.v], *bf = xbase[tm.f];
-    deficit[tm.f] += tm.grad[0] * (xv[0] - bv[0] - xf[0] + bf[0]) +
-        tm.grad[1] * (xv[1] - bv[1] - xf[1] + bf[1]) + tm.grad[2] * (xv[2] - bv[2] - xf[2] + bf[2]);
+    const double *dv = disp[tm.v];
+    deficit[tm.f] += tm.grad[0] * dv[0] + tm.grad[1] * dv[1] + tm.grad[2] * dv[2];
   }
 }
 
@@ -807,25 +823,28 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
   const double *rmass = atom->rmass;
   const double *rho = atom->dvector[irho];
 
-  for (const Term &tm : terms) {
-    const int i = tm.f, v = tm.v;
+  // the forces on the wall atoms go into wallload (zero before, from sum_density), added to f
+  // at the end
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
     // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
     // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
-    if (1.0 - deficit[i] < gamma_min) continue;
+    if (termfirst[i] == termfirst[i + 1] || 1.0 - deficit[i] < gamma_min) continue;
     const double c = rmass[i] * prho2[i] * rho[i];
-    const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
-    f[i][0] += fx;
-    f[i][1] += fy;
-    f[i][2] += fz;
-    f[v][0] -= fx;
-    f[v][1] -= fy;
-    f[v][2] -= fz;
-    wallload[v][0] -= fx;
-    wallload[v][1] -= fy;
-    wallload[v][2] -= fz;
-    if (EVFLAG)
-      ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
-                   x[i][1] - x[v][1], x[i][2] - x[v][2]);
+    f[i][0] += c * gradsum[i][0];
+    f[i][1] += c * gradsum[i][1];
+    f[i][2] += c * gradsum[i][2];
+    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
+      const Term &tm = terms[k];
+      const int v = tm.v;
+      const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
+      wallload[v][0] -= fx;
+      wallload[v][1] -= fy;
+      wallload[v][2] -= fz;
+      if (EVFLAG)
+        ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
+                     x[i][1] - x[v][1], x[i][2] - x[v][2]);
+    }
   }
 
   // contacts with the wall surface: F on the fluid atom, -lambda_v F on vertex v (newton on)
@@ -835,7 +854,6 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
       f[ct.f][d] += ct.force[d];
       for (int k = 0; k < 3; k++) {
         fv[k][d] = -ct.lambda[k] * ct.force[d];
-        f[ct.v[k]][d] += fv[k][d];
         wallload[ct.v[k]][d] += fv[k][d];
       }
     }
@@ -856,6 +874,8 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
       }
     }
   }
+  for (int i = 0; i < nall; i++)
+    for (int d = 0; d < 3; d++) f[i][d] += wallload[i][d];
 }
 
 /* ----------------------------------------------------------------------
@@ -1864,7 +1884,7 @@ double PairCellSPH::memory_usage()
     bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
         step.capacity() * sizeof(double);
   if (walls)
-    bytes += nmax * (8.0 * sizeof(double) + 3.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
+    bytes += nmax * (14.0 * sizeof(double) + 4.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
         contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
         trivert.capacity() * sizeof(int) + tritag.capacity() * sizeof(tagint) +
         fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +

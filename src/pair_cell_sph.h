@@ -115,12 +115,15 @@ class PairCellSPH : public Pair {
     int f, v;          // fluid atom, wall vertex
     double grad[3];    // grad_v D_f: derivative of 1 - gamma_f in the vertex's position
   };
-  std::vector<Term> terms;    // per fluid atom and vertex of the triangles in its kernel support
-  double *deficit0;           // 1 - gamma at the last exact evaluation (partial sums per rank)
-  double **xbase;             // positions at the last exact evaluation
-  int *slot;                  // scratch of merge_terms(), -1 outside it
-  int refreshing;             // 1 if this step evaluates the kernel completion exactly
-  bigint refreshed;           // step of the last exact evaluation
+  std::vector<Term> terms;       // per fluid atom and vertex of the triangles in its kernel support
+  double *deficit0;              // 1 - gamma at the last exact evaluation (partial sums per rank)
+  double **xbase;                // positions at the last exact evaluation
+  double **gradsum;              // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
+  double **disp;                 // displacement since the last exact evaluation
+  std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
+  int *slot;                     // scratch of merge_terms(), -1 outside it
+  int refreshing;                // 1 if this step evaluates the kernel completion exactly
+  bigint refreshed;              // step of the last exact evaluation
   struct Contact {
     int f, v[3];         // fluid atom; triangle vertices a, b, c
     double force[3];     // force on the fluid atom; -lambda_v force on vertex v
