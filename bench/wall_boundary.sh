@@ -4,7 +4,7 @@
 # shells (bench/pressure_shells.py) and the mean SPH pressure against the wall load and the
 # Neo-Hookean membrane law. h and the time step scale with the fluid spacing DX (h = 1.27 DX, the
 # seed's 12.2 um at 9.6 um; the old model keeps apple.cellsph's 12.2 um), the wall-wall contact
-# size with the wall spacing (bench/scaled_cell.sh). On 2 ranks:
+# size with the wall spacing (bench/scaled_cell.sh). On 2 ranks (NP=1: on one, faster on a loaded machine):
 #   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
 #   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
 #   C. boundary at 1.35 x water, coarse (312 wall, 461 fluid) and fine (2562 wall, 3911 fluid)
@@ -39,7 +39,7 @@ run() {    # name bnd f nwall nfluid [cellgen options]; $hmode: the smoothing le
   local hcap=1.3
   if [ "${f%.*}" -ge 2 ]; then hcap=1.5; fi
   local t0=$SECONDS
-  mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
+  mpirun -np "${NP:-2}" "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
     -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -var hmode "$hmode" -var hcap "$hcap" -var K "$K" -var popt "$popt" -var eta "$hdx" -log log.lammps | grep RESULT
   python3 "$here/pressure_shells.py" profile.txt "$name" | tail -1
   echo "  ($((SECONDS - t0)) s, DX $dx, gap $gap)"
