@@ -4,13 +4,17 @@
 # shells (bench/pressure_shells.py) and the mean SPH pressure against the wall load and the
 # Neo-Hookean membrane law. h and the time step scale with the fluid spacing DX (h = 1.27 DX, the
 # seed's 12.2 um at 9.6 um; the old model keeps apple.cellsph's 12.2 um), the wall-wall contact
-# size with the wall spacing (bench/scaled_cell.sh). On 2 ranks:
+# size with the wall spacing (bench/scaled_cell.sh). On 2 ranks (NP=1: on one, faster on a loaded machine):
 #   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
 #   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
 #   C. boundary at 1.35 x water, coarse (312 wall, 461 fluid) and fine (2562 wall, 3911 fluid)
 #   H. the smoothing length (boundary): fixed h, h mass and h adaptive (eta = 1.27, h/dx of the
 #      fluid lattice) at three resolutions, 1.35 x water, and at the seed resolution, 1.06 and 2.2 x
 #      (HMODES and HCASES pick a subset: HMODES=adaptive HCASES="coarse seed")
+#   U. uniformity of the fluid against the fluid's parameters: each of UVARIANTS, given as
+#      name:K:h/dx:hmode:pair_style options (options with '+' for spaces, '-' for none), at each
+#      of UCASES (coarse seed fine seed-1.06 seed-2.2); default: the seed's K = 20 MPa against
+#      K = 5 MPa and h/dx = 1.27 against 1.5, fixed h, at the seed resolution
 # About 25 minutes on 2 free cores (H alone about 40, estimated; under load 2 hours);
 # `bench/wall_boundary.sh A` runs one part.
 set -euo pipefail
@@ -22,20 +26,21 @@ if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_
 export LAMMPS_POTENTIALS=$here/../potentials
 parts=${1:-ABC}
 source "$here/scaled_cell.sh"
-hmode=fixed
+hmode=fixed K=20e6 hdx=1.27 popt="kernel wendland"
 run() {    # name bnd f nwall nfluid [cellgen options]; $hmode: the smoothing length mode
   local name=$1 bnd=$2 f=$3 nwall=$4 nfluid=$5
   shift 5
   mkdir -p "$work/$name" && cd "$work/$name"
   local dx gap h dt ws
   scaled_cell "$nwall" "$nfluid" "$@"
+  h=$(python3 -c "print($h*$hdx/1.27)")    # h/dx other than the seed's (part U)
   if [ "$bnd" = 0 ]; then h=12.2e-6 dt=1e-8; fi    # the old model as calibrated (apple.cellsph)
   # per-atom h grows with the water from the lattice's h: the neighbour cutoff for h up to hcap h
   local hcap=1.3
   if [ "${f%.*}" -ge 2 ]; then hcap=1.5; fi
   local t0=$SECONDS
-  mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
-    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -var hmode "$hmode" -var hcap "$hcap" -log log.lammps | grep RESULT
+  mpirun -np "${NP:-2}" "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd "$bnd" -var f "$f" \
+    -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" -var hmode "$hmode" -var hcap "$hcap" -var K "$K" -var popt "$popt" -var eta "$hdx" -log log.lammps | grep RESULT
   python3 "$here/pressure_shells.py" profile.txt "$name" | tail -1
   echo "  ($((SECONDS - t0)) s, DX $dx, gap $gap)"
 }
@@ -68,4 +73,21 @@ if [[ $parts == *H* ]]; then
     done
   done
   hmode=fixed
+fi
+if [[ $parts == *U* ]]; then
+  echo "== U. uniformity against K, h/dx, the h mode and pair_style options"
+  for v in ${UVARIANTS:-k20:20e6:1.27:fixed:- k5:5e6:1.27:fixed:- hdx1.5:20e6:1.5:fixed:-}; do
+    IFS=: read -r vname K hdx hmode popt <<<"$v"
+    if [ "$popt" = - ]; then popt="kernel wendland"; else popt=${popt//+/ }; fi
+    for case in ${UCASES:-seed}; do
+      case $case in
+        coarse) run "$vname-coarse" 1 1.35 300 450 ;;
+        seed) run "$vname-seed" 1 1.35 1091 1624 ;;
+        fine) run "$vname-fine" 1 1.35 2562 3900 ;;
+        seed-1.06) run "$vname-seed-1.06" 1 1.06 1091 1624 ;;
+        seed-2.2) run "$vname-seed-2.2" 1 2.2 1091 1624 ;;
+      esac
+    done
+  done
+  hmode=fixed K=20e6 hdx=1.27 popt="kernel wendland"
 fi

@@ -35,7 +35,7 @@ using namespace LAMMPS_NS;
 
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
 // 4: the temperature of the viscosity (temp, Tref)
-static const int RESTART_VERSION = 4;
+static const int RESTART_VERSION = 5;
 static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
@@ -59,19 +59,22 @@ static const double CONTACT_H = 2.5;
 // kernel completion evaluated exactly every REFRESH steps (and on reneighbouring), linearised in
 // the atom displacements in between
 static const int REFRESH = 20;
+// particle shifting: the largest displacement of one step, in units of the atom's h
+static const double SHIFT_MAX = 0.05;
 
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
-    hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), pc(nullptr), wself(nullptr),
-    invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1),
-    ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
-    dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), gamma_min(0.25),
-    phidq(0.0), deficit(nullptr), wallload(nullptr), tricount(nullptr), trifirst(nullptr),
-    edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr), slot(nullptr), refreshing(1),
-    refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr),
-    nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
+    hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
+    pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
+    viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
+    hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
+    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), wallload(nullptr),
+    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr),
+    xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr), refreshing(1), refreshed(-1),
+    commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0),
+    pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
     pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
@@ -82,7 +85,7 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
   writedata = 1;
   reinitflag = 0;
   comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
-  comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load
+  comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load or grad C
 }
 
 /* ---------------------------------------------------------------------- */
@@ -120,7 +123,8 @@ void PairCellSPH::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   const int peratom = hmode != HFIXED;
-  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum);
+  const bool grown =
+      atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum) || (shift > 0.0 && !gradc);
   if (grown) grow_peratom();
   if (temp_set) update_viscosity();
 
@@ -181,6 +185,57 @@ void PairCellSPH::compute(int eflag, int vflag)
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
+  // not in a run's setup nor in a minimisation
+  if (shift > 0.0 && !update->setupflag && update->whichflag == 1) shift_atoms();
+}
+
+/* ----------------------------------------------------------------------
+   particle shifting (pair_style keyword shift A): after the forces, each owned fluid atom moves
+   down the gradient of the kernel concentration C_i = sum_j (m_j/rho_j) W_ij + (1 - gamma_i)
+   (the completion across the wall counted as fluid), dx_i = -A h_i^2 grad C_i, at most
+   SHIFT_MAX h_i (Lind et al. 2012; doc/pair_cell_sph.md). Velocities are not changed.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::shift_atoms()
+{
+  double **x = atom->x;
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int peratom = hmode != HFIXED;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  for (int i = 0; i < nall; i++) gradc[i][0] = gradc[i][1] = gradc[i][2] = 0.0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++) {
+      const int j = pairj[k];
+      // grad_i C_i += (m_j/rho_j) (1/r) dW/dr x_ij, grad_j C_j -= (m_i/rho_i) (1/r) dW/dr x_ij
+      const double ci = pairdw[k] * rhoinv[j] / rmass[i];
+      const double cj = (peratom ? pairdwj[k] : pairdw[k]) * rhoinv[i] / rmass[j];
+      for (int d = 0; d < 3; d++) {
+        const double del = x[i][d] - x[j][d];
+        gradc[i][d] += ci * del;
+        gradc[j][d] -= cj * del;
+      }
+    }
+  }
+  // the completion: grad_f (1 - gamma_f) = -sum_v grad_v D_f
+  if (walls)
+    for (int i = 0; i < nall; i++)
+      for (int d = 0; d < 3; d++) gradc[i][d] -= gradsum[i][d];
+  commode = COMM_SHIFT;
+  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    if (!fluid[type[i]]) continue;
+    const double hi = peratom ? atom->dvector[ih][i] : h[type[i]][type[i]];
+    const double a = shift * hi * hi;
+    const double len = a * sqrt(CellTriangle::dot(gradc[i], gradc[i]));
+    const double scale = len > SHIFT_MAX * hi ? SHIFT_MAX * hi / len : 1.0;
+    for (int d = 0; d < 3; d++) x[i][d] -= scale * a * gradc[i][d];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -401,6 +456,9 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(trifirst);
   memory->destroy(deficit0);
   memory->destroy(xbase);
+  memory->destroy(gradsum);
+  memory->destroy(disp);
+  memory->destroy(gradc);
   memory->destroy(slot);
   memory->destroy(hscale);
   memory->destroy(dsum);
@@ -424,6 +482,7 @@ void PairCellSPH::grow_peratom()
       memory->create(hbase, nmax, "pair:hbase");
     }
   }
+  if (shift > 0.0) memory->create(gradc, nmax, 3, "pair:gradc");
   if (!walls) return;
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
@@ -431,6 +490,8 @@ void PairCellSPH::grow_peratom()
   memory->create(trifirst, nmax, "pair:trifirst");
   memory->create(deficit0, nmax, "pair:deficit0");
   memory->create(xbase, nmax, 3, "pair:xbase");
+  memory->create(gradsum, nmax, 3, "pair:gradsum");
+  memory->create(disp, nmax, 3, "pair:disp");
   memory->create(slot, nmax, "pair:slot");
   for (int i = 0; i < nmax; i++) slot[i] = -1;
 }
@@ -755,11 +816,21 @@ void PairCellSPH::merge_terms()
     for (int k = start; k < static_cast<int>(merged.size()); k++) slot[merged[k].v] = -1;
   }
   terms.swap(merged);
+  // the terms of fluid atom f are terms[termfirst[f]] .. terms[termfirst[f + 1] - 1], and
+  // gradsum[f] = sum_v grad_v D_f = -grad_f D_f
+  termfirst.assign(nall + 1, 0);
+  for (const Term &tm : terms) termfirst[tm.f + 1]++;
+  for (int i = 0; i < nall; i++) termfirst[i + 1] += termfirst[i];
   double **x = atom->x;
   for (int i = 0; i < nall; i++) {
     deficit0[i] = deficit[i];
-    for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
+    for (int d = 0; d < 3; d++) {
+      xbase[i][d] = x[i][d];
+      gradsum[i][d] = 0.0;
+    }
   }
+  for (const Term &tm : terms)
+    for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
   if (hmode != HFIXED) {
     const double *hv = atom->dvector[ih];
     for (int i = 0; i < nall; i++) {
@@ -771,27 +842,29 @@ void PairCellSPH::merge_terms()
 
 /* ----------------------------------------------------------------------
    between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f)
-   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base
-   (grad_f D_f = -sum_v grad_v D_f)
+   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base, summed as
+   D_f(base) - gradsum_f . dx_f + sum_v grad_v D_f . dx_v (grad_f D_f = -gradsum_f)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::linear_deficit()
 {
   double **x = atom->x;
   const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
+    for (int d = 0; d < 3; d++) disp[i][d] = x[i][d] - xbase[i][d];
+    deficit[i] = deficit0[i] -
+        (gradsum[i][0] * disp[i][0] + gradsum[i][1] * disp[i][1] + gradsum[i][2] * disp[i][2]);
+  }
   if (hmode != HFIXED) {
     const double *hv = atom->dvector[ih];
     for (int i = 0; i < nall; i++) {
       dhdef[i] = dhdef0[i];
-      deficit[i] = deficit0[i] + dhdef0[i] * (hv[i] - hbase[i]);
+      deficit[i] += dhdef0[i] * (hv[i] - hbase[i]);
     }
-  } else {
-    for (int i = 0; i < nall; i++) deficit[i] = deficit0[i];
   }
   for (const Term &tm : terms) {
-    const double *xv = x[tm.v], *xf = x[tm.f], *bv = xbase[tm.v], *bf = xbase[tm.f];
-    deficit[tm.f] += tm.grad[0] * (xv[0] - bv[0] - xf[0] + bf[0]) +
-        tm.grad[1] * (xv[1] - bv[1] - xf[1] + bf[1]) + tm.grad[2] * (xv[2] - bv[2] - xf[2] + bf[2]);
+    const double *dv = disp[tm.v];
+    deficit[tm.f] += tm.grad[0] * dv[0] + tm.grad[1] * dv[1] + tm.grad[2] * dv[2];
   }
 }
 
@@ -807,25 +880,28 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
   const double *rmass = atom->rmass;
   const double *rho = atom->dvector[irho];
 
-  for (const Term &tm : terms) {
-    const int i = tm.f, v = tm.v;
+  // the forces on the wall atoms go into wallload (zero before, from sum_density), added to f
+  // at the end
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
     // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
     // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
-    if (1.0 - deficit[i] < gamma_min) continue;
+    if (termfirst[i] == termfirst[i + 1] || 1.0 - deficit[i] < gamma_min) continue;
     const double c = rmass[i] * prho2[i] * rho[i];
-    const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
-    f[i][0] += fx;
-    f[i][1] += fy;
-    f[i][2] += fz;
-    f[v][0] -= fx;
-    f[v][1] -= fy;
-    f[v][2] -= fz;
-    wallload[v][0] -= fx;
-    wallload[v][1] -= fy;
-    wallload[v][2] -= fz;
-    if (EVFLAG)
-      ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
-                   x[i][1] - x[v][1], x[i][2] - x[v][2]);
+    f[i][0] += c * gradsum[i][0];
+    f[i][1] += c * gradsum[i][1];
+    f[i][2] += c * gradsum[i][2];
+    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
+      const Term &tm = terms[k];
+      const int v = tm.v;
+      const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
+      wallload[v][0] -= fx;
+      wallload[v][1] -= fy;
+      wallload[v][2] -= fz;
+      if (EVFLAG)
+        ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
+                     x[i][1] - x[v][1], x[i][2] - x[v][2]);
+    }
   }
 
   // contacts with the wall surface: F on the fluid atom, -lambda_v F on vertex v (newton on)
@@ -835,7 +911,6 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
       f[ct.f][d] += ct.force[d];
       for (int k = 0; k < 3; k++) {
         fv[k][d] = -ct.lambda[k] * ct.force[d];
-        f[ct.v[k]][d] += fv[k][d];
         wallload[ct.v[k]][d] += fv[k][d];
       }
     }
@@ -856,6 +931,8 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
       }
     }
   }
+  for (int i = 0; i < nall; i++)
+    for (int d = 0; d < 3; d++) f[i][d] += wallload[i][d];
 }
 
 /* ----------------------------------------------------------------------
@@ -1194,6 +1271,7 @@ void PairCellSPH::settings(int narg, char **arg)
   temp = CellQuantity();
   tref = TREF_DEFAULT;
   muscale = 1.0;
+  shift = 0.0;
   if (narg > 0 && utils::is_double(arg[0])) {
     cut_global = utils::numeric(FLERR, arg[0], false, lmp);
     if (cut_global <= 0.0)
@@ -1247,6 +1325,10 @@ void PairCellSPH::settings(int narg, char **arg)
                    "Pair style cell/sph: reference temperature Tref = {} K is outside {}-{} K "
                    "(0-370 C), the range of the Vogel correlation of the viscosity of water",
                    tref, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
+    } else if (strcmp(arg[iarg], "shift") == 0) {
+      shift = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(shift >= 0.0))
+        error->all(FLERR, "Pair style cell/sph: shift A = {} must be >= 0", shift);
     } else if (strcmp(arg[iarg], "kernel") == 0) {
       kernel = CellKernel::parse(value);
       if (kernel < 0)
@@ -1264,7 +1346,7 @@ void PairCellSPH::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos', "
-                 "'h', 'temp' or 'Tref')",
+                 "'h', 'temp', 'Tref' or 'shift')",
                  arg[iarg]);
     }
     iarg += 2;
@@ -1592,6 +1674,8 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   const int len = static_cast<int>(temp.name.size());
   fwrite(&len, sizeof(int), 1, fp);
   if (len > 0) fwrite(temp.name.data(), sizeof(char), len, fp);
+  // version 5: shift
+  fwrite(&shift, sizeof(double), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1627,6 +1711,10 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     name.resize(len);
     if (len > 0) utils::sfread(FLERR, name.data(), sizeof(char), len, fp, nullptr, error);
   }
+  // shift from version 5 on; older files had none
+  shift = 0.0;
+  if (comm->me == 0 && restart_version >= 5)
+    utils::sfread(FLERR, &shift, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -1637,6 +1725,7 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&temp_set, 1, MPI_INT, 0, world);
   MPI_Bcast(&temp.value, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&tref, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&shift, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);
@@ -1817,8 +1906,9 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
     }
     return m;
   }
+  double **v = commode == COMM_SHIFT ? gradc : wallload;
   for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) buf[m++] = wallload[i][d];
+    for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
   return m;
 }
 
@@ -1838,8 +1928,9 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
     }
     return;
   }
+  double **v = commode == COMM_SHIFT ? gradc : wallload;
   for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) wallload[list[k]][d] += buf[m++];
+    for (int d = 0; d < 3; d++) v[list[k]][d] += buf[m++];
 }
 
 /* ----------------------------------------------------------------------
@@ -1864,7 +1955,7 @@ double PairCellSPH::memory_usage()
     bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
         step.capacity() * sizeof(double);
   if (walls)
-    bytes += nmax * (8.0 * sizeof(double) + 3.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
+    bytes += nmax * (14.0 * sizeof(double) + 4.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
         contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
         trivert.capacity() * sizeof(int) + tritag.capacity() * sizeof(tagint) +
         fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +

@@ -65,6 +65,11 @@ class PairCellSPH : public Pair {
   double temperature;    // the T of the last evaluation (K)
   void update_viscosity();
 
+  // particle shifting (pair_style keyword shift A): dx_i = -A h_i^2 grad C_i after the forces
+  double shift;      // A, 0 = off
+  double **gradc;    // grad C_i of the kernel concentration C_i (owned and ghost atoms)
+  void shift_atoms();
+
   struct PairConst {
     double cutsq;               // (kernel support)^2; 0 if the pair is not computed
     CellKernel::Scale scale;    // kernel constants at this pair's h (the fluid's for a boundary)
@@ -115,12 +120,15 @@ class PairCellSPH : public Pair {
     int f, v;          // fluid atom, wall vertex
     double grad[3];    // grad_v D_f: derivative of 1 - gamma_f in the vertex's position
   };
-  std::vector<Term> terms;    // per fluid atom and vertex of the triangles in its kernel support
-  double *deficit0;           // 1 - gamma at the last exact evaluation (partial sums per rank)
-  double **xbase;             // positions at the last exact evaluation
-  int *slot;                  // scratch of merge_terms(), -1 outside it
-  int refreshing;             // 1 if this step evaluates the kernel completion exactly
-  bigint refreshed;           // step of the last exact evaluation
+  std::vector<Term> terms;       // per fluid atom and vertex of the triangles in its kernel support
+  double *deficit0;              // 1 - gamma at the last exact evaluation (partial sums per rank)
+  double **xbase;                // positions at the last exact evaluation
+  double **gradsum;              // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
+  double **disp;                 // displacement since the last exact evaluation
+  std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
+  int *slot;                     // scratch of merge_terms(), -1 outside it
+  int refreshing;                // 1 if this step evaluates the kernel completion exactly
+  bigint refreshed;              // step of the last exact evaluation
   struct Contact {
     int f, v[3];         // fluid atom; triangle vertices a, b, c
     double force[3];     // force on the fluid atom; -lambda_v force on vertex v
@@ -131,7 +139,7 @@ class PairCellSPH : public Pair {
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
   std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
   std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell
-  enum { COMM_DENSITY, COMM_SUMS, COMM_H, COMM_LOAD, COMM_TRIANGLES } commode;
+  enum { COMM_DENSITY, COMM_SUMS, COMM_H, COMM_LOAD, COMM_TRIANGLES, COMM_SHIFT } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
