@@ -18,6 +18,7 @@
 namespace LAMMPS_NS {
 
 class CellReduce;
+class CellRegistry;
 
 class FixCellTurgor : public Fix {
  public:
@@ -46,6 +47,8 @@ class FixCellTurgor : public Fix {
   bool osmotic(tagint cell, double mass, double &pi) const;
   bool turgor(tagint cell, double &pt) const;
   bool water(tagint cell, double mass, Water &w) const;
+  // the cells and their home ranks, where the per-cell state is kept (cell_registry.h)
+  const CellRegistry &registry() const;
 
  protected:
   enum Osmotic { FIXED = 0, VANTHOFF = 1 };
@@ -83,10 +86,18 @@ class FixCellTurgor : public Fix {
   double kfluid;         // K in use
   int osmotic_law, limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
-  std::map<tagint, CellState> state;
-  std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
+  std::map<tagint, CellState> state;    // the home cells' (and on rank 0 unknown cells') state
+  std::vector<double> gt0;              // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
+  double busiest;    // the most cells one rank summed at the last evaluation
+  // a cell's problem found on its home rank, stopping every rank (CellRegistry::settle)
+  struct Failure {
+    int cell;
+    std::string message;
+  };
+  Failure failure;                      // the first of this rank's home cells at this evaluation
+  std::vector<std::string> warnings;    // of this rank's home cells at this evaluation
 
   // accel auto: tolerance, floor, ceiling, start (0: from the cell's state), transfers per
   // adaptation; pending: accel still to be set from the cells' state at the next evaluation
@@ -96,6 +107,9 @@ class FixCellTurgor : public Fix {
   double lag_estimate, lag_error;    // of the last adaptation window
 
   void evaluate(bool transfer);
+  void pack_state(std::vector<double> &list, bool full) const;
+  void unpack_state(const double *v, bool full, CellState &cell) const;
+  void gather_state(bool everywhere, std::vector<double> &list) const;
   int parse_accel(int narg, char **arg, const std::string &command);
   double start_accel(int c, double conductance, double slope) const;
   bigint accel_window() const;
@@ -105,7 +119,7 @@ class FixCellTurgor : public Fix {
   bool cell_lag(const CellState &s, bigint every, double &lag, double &error) const;
   void adapt_accel(bigint every);
   double offset_time() const;
-  void check_limit(int c, CellState &s, double turgor, double pi, double demand);
+  bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
   double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
