@@ -33,9 +33,9 @@ static double cross_norm(const double *u, const double *w)
 CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, int fluid, int wall,
                        bool fluid_sums) :
     Pointers(lmp),
-    command(command_in), group_name(group->names[igroup]), groupbit(group->bitmask[igroup]),
-    fluidtype(fluid), walltype(wall), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
-    geometry_only(!fluid_sums), wallpair(nullptr), sphpair(nullptr)
+    command(command_in), group_name(group->names[igroup]), fluidtype(fluid), walltype(wall),
+    irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL), geometry_only(!fluid_sums),
+    wallpair(nullptr), sphpair(nullptr), cells(lmp, command_in, igroup)
 {
   for (int type : {geometry_only ? wall : fluid, wall})
     if (type < 1 || type > atom->ntypes)
@@ -59,33 +59,7 @@ void CellReduce::set_turgor(const std::string &value)
 }
 
 /* ----------------------------------------------------------------------
-   the cells: distinct molecule IDs > 0 of the group's atoms on all ranks
-------------------------------------------------------------------------- */
-
-void CellReduce::find_cells()
-{
-  std::vector<tagint> mine;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) mine.push_back(atom->molecule[i]);
-  std::sort(mine.begin(), mine.end());
-  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-
-  const int n = (int) mine.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  ids.resize(displs.back() + counts.back());
-  MPI_Allgatherv(mine.data(), n, MPI_LMP_TAGINT, ids.data(), counts.data(), displs.data(),
-                 MPI_LMP_TAGINT, world);
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  if (ids.empty())
-    error->all(FLERR, "{}: group {} has no atoms with a molecule (cell) ID > 0", command,
-               group_name);
-}
-
-/* ----------------------------------------------------------------------
-   per-atom fields and each cell's reference point (mean unwrapped wall position)
+   per-atom fields, each cell's reference point (mean unwrapped wall position) and home rank
 ------------------------------------------------------------------------- */
 
 void CellReduce::init()
@@ -94,23 +68,7 @@ void CellReduce::init()
   int flag, cols;
   ixref = atom->find_custom("xref", flag, cols);
   if (flag != 1 || cols != 3) ixref = -1;
-
-  const int n = ncell();
-  std::vector<double> sum(4 * n, 0.0), all(4 * n);
-  double xu[3];
-  for (int i = 0; i < atom->nlocal; i++) {
-    const int c =
-        (atom->mask[i] & groupbit) && atom->type[i] == walltype ? index(atom->molecule[i]) : -1;
-    if (c < 0) continue;
-    domain->unmap(atom->x[i], atom->image[i], xu);
-    for (int d = 0; d < 3; d++) sum[4 * c + d] += xu[d];
-    sum[4 * c + 3] += 1.0;
-  }
-  MPI_Allreduce(sum.data(), all.data(), 4 * n, MPI_DOUBLE, MPI_SUM, world);
-  ref.assign(3 * n, 0.0);
-  for (int c = 0; c < n; c++)
-    if (all[4 * c + 3] > 0.0)
-      for (int d = 0; d < 3; d++) ref[3 * c + d] = all[4 * c + d] / all[4 * c + 3];
+  cells.init(walltype);
 }
 
 /* ----------------------------------------------------------------------
@@ -152,16 +110,8 @@ int CellReduce::custom_vector(const char *name) const
   return index;
 }
 
-/* ---------------------------------------------------------------------- */
-
-int CellReduce::index(tagint molecule) const
-{
-  auto it = std::lower_bound(ids.begin(), ids.end(), molecule);
-  return (it != ids.end() && *it == molecule) ? (int) (it - ids.begin()) : -1;
-}
-
 /* ----------------------------------------------------------------------
-   sum each cell's columns over owned atoms, then one MPI_Allreduce.
+   sum the columns of the cells this rank touches over owned atoms, total them on the home ranks.
    Each triangle (angle a b c, b the middle atom) is counted once, by the owner of b: angles are
    stored with b for newton_bond on and off. Vertices are unwrapped around b, relative to the
    cell's reference point. bond_gt0[type] = G t0 of each bond type, or nullptr for no bond sums.
@@ -171,10 +121,9 @@ int CellReduce::index(tagint molecule) const
 void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
                         std::vector<tagint> *corners)
 {
-  const int n = ncell();
-  local.assign(NCOLUMN * n, 0.0);
-  total.resize(NCOLUMN * n);
-  cellof.assign(atom->nlocal, -1);
+  cells.map_atoms();
+  const std::vector<int> &cellof = cells.cell_of_atom();
+  local.assign(NCOLUMN * cells.touched().size(), 0.0);
   if (triangles) triangles->clear();
   if (corners) corners->clear();
 
@@ -186,17 +135,15 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
   const tagint *tag = atom->tag;
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
-  const int *mask = atom->mask;
   const int newton_bond = force->newton_bond;
   double **load = wallpair ? wallpair->wall_load() : nullptr;
   double **sphload = sphpair ? sphpair->wall_load() : nullptr;
 
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const int c = index(molecule[i]);
-    cellof[i] = c;
+    const int c = cellof[i];
     if (c < 0) continue;
-    double *s = &local[NCOLUMN * c];
+    const double *ref = cells.reference(c);
+    double *s = &local[NCOLUMN * cells.slot(c)];
 
     if (type[i] == fluidtype) {
       if (geometry_only) continue;
@@ -215,7 +162,7 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
 
     double b[3];
     domain->unmap(x[i], atom->image[i], b);
-    for (int d = 0; d < 3; d++) b[d] -= ref[3 * c + d];
+    for (int d = 0; d < 3; d++) b[d] -= ref[d];
     s[NWALL] += 1.0;
     s[WX] += b[0];
     s[WY] += b[1];
@@ -284,20 +231,26 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
     }
   }
 
-  MPI_Allreduce(local.data(), total.data(), NCOLUMN * n, MPI_DOUBLE, MPI_SUM, world);
+  cells.reduce(NCOLUMN, local, total);
 
-  for (int c = 0; c < n; c++) {
+  // the first bad cell (home ranks) stops every rank
+  int bad = ncell();
+  std::string why;
+  for (int c : cells.home_cells()) {
     if (get(c, NTRI) == 0.0)
-      error->all(FLERR,
-                 "{}: cell {} has no wall triangles (angles whose middle atom is a type {} atom "
-                 "of group {})",
-                 command, ids[c], walltype, group_name);
-    if (get(c, BADRHO) > 0.0)
-      error->all(FLERR,
-                 "{}: cell {} has {} fluid atoms without a density rho > 0 (is pair cell/sph "
-                 "computing it?)",
-                 command, ids[c], (bigint) get(c, BADRHO));
+      why = fmt::format("{}: cell {} has no wall triangles (angles whose middle atom is a type {} "
+                        "atom of group {})",
+                        command, id(c), walltype, group_name);
+    else if (get(c, BADRHO) > 0.0)
+      why = fmt::format("{}: cell {} has {} fluid atoms without a density rho > 0 (is pair "
+                        "cell/sph computing it?)",
+                        command, id(c), (bigint) get(c, BADRHO));
+    else
+      continue;
+    bad = c;
+    break;
   }
+  cells.settle(bad, why, {});
 }
 
 /* ----------------------------------------------------------------------

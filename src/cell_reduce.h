@@ -1,14 +1,16 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   The one place that computes per-cell sums (doc/model.md §5.2), shared by fix cell/turgor and
-   compute cell/props. A cell is a molecule ID > 0; its fluid and wall atoms are told apart by type.
-   Each reduce() sums over owned atoms and wall triangles and does one MPI_Allreduce, so cells may
-   straddle ranks and periodic boundaries.
+   The per-cell sums of fluid and wall (doc/model.md §5.2), shared by fix cell/turgor and compute
+   cell/props, on a CellRegistry (cell_registry.h). A cell is a molecule ID > 0; its fluid and wall
+   atoms are told apart by type. Each reduce() sums over owned atoms and wall triangles of the
+   cells this rank touches and totals each cell on its home rank, so cells may straddle ranks and
+   periodic boundaries; the totals (get(), mass(), ...) are there only, for the home cells.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_REDUCE_H
 #define LMP_CELL_REDUCE_H
 
+#include "cell_registry.h"
 #include "pointers.h"
 
 #include <string>
@@ -61,7 +63,7 @@ class CellReduce : protected Pointers {
 
   // the value of a 'turgor wall|sph' keyword
   void set_turgor(const std::string &value);
-  void find_cells();
+  void find_cells() { cells.find_cells(); }
   void init();
   // triangles, if given, receives each counted wall triangle as 10 numbers: cell index, then the
   // corners a, b, c relative to the cell's reference point, unwrapped as for the volume; corners,
@@ -72,13 +74,18 @@ class CellReduce : protected Pointers {
   void gather_triangles(const std::vector<double> &mine, class CellTriangles &all,
                         const std::vector<tagint> *mycorners = nullptr) const;
 
-  int ncell() const { return (int) ids.size(); }
-  tagint id(int c) const { return ids[c]; }
-  double get(int c, Column k) const { return total[c * NCOLUMN + k]; }
+  // the cells, their home ranks, the exchange of per-cell values
+  CellRegistry &registry() { return cells; }
+  const CellRegistry &registry() const { return cells; }
+  int ncell() const { return cells.ncell(); }
+  tagint id(int c) const { return cells.id(c); }
+  // this rank's home cells, ascending: get() and the values below are defined for these
+  const std::vector<int> &home_cells() const { return cells.home_cells(); }
+  double get(int c, Column k) const { return total[(size_t) cells.home_slot(c) * NCOLUMN + k]; }
   // cell index of each owned atom at the last reduce(), -1 if it belongs to no cell of the group
-  const std::vector<int> &cell_of_atom() const { return cellof; }
+  const std::vector<int> &cell_of_atom() const { return cells.cell_of_atom(); }
   // reference point of cell c (unwrapped), the origin of the triangles of reduce()
-  const double *reference(int c) const { return &ref[3 * c]; }
+  const double *reference(int c) const { return cells.reference(c); }
 
   double mass(int c) const { return get(c, MASS); }
   double volume(int c) const { return get(c, VOLUME6) / 6.0; }
@@ -95,19 +102,16 @@ class CellReduce : protected Pointers {
 
  private:
   std::string command, group_name;
-  int groupbit, fluidtype, walltype;
+  int fluidtype, walltype;
   int irho, ipressure, ixref;
   int measure;
   bool geometry_only;
   class PairCellWall *wallpair;    // tallies the wall load, nullptr if none
   class PairCellSPH *sphpair;      // its wall boundary carries the rest of the load, or nullptr
-  std::vector<tagint> ids;         // cell (molecule) IDs, ascending
-  std::vector<double> ref;         // reference point of each cell (unwrapped), 3 per cell
-  std::vector<double> local, total;
-  std::vector<int> cellof;
+  CellRegistry cells;
+  std::vector<double> local, total;    // sums per touched cell, totals per home cell
 
   void init_fluid();
-  int index(tagint molecule) const;
   int custom_vector(const char *name) const;
 };
 

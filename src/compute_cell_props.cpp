@@ -1,7 +1,9 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    compute cell/props: per-cell state from the shared per-cell sums (cell_reduce.h), one row per
-   cell in ascending cell ID, usable as c_ID[i][j] in thermo and by fix ave/time mode vector.
+   cell in ascending cell ID, usable as c_ID[i][j] in thermo and by fix ave/time mode vector. Each
+   row is made on the cell's home rank (where fix cell/turgor keeps the cell's water), then every
+   rank gathers all rows.
 ------------------------------------------------------------------------- */
 
 #include "compute_cell_props.h"
@@ -52,7 +54,8 @@ static double winding_number(const double *tri, int ntri, const double *p)
 
 /* ---------------------------------------------------------------------- */
 
-ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), homes_checked(false)
 {
   int walltype = 2;
   fluidtype = 1;
@@ -104,6 +107,7 @@ void ComputeCellProps::init()
   for (int i = 0; i < modify->nfix; i++)
     if (strcmp(modify->fix[i]->style, "cell/turgor") == 0)
       turgor.push_back(dynamic_cast<FixCellTurgor *>(modify->fix[i]));
+  homes_checked = false;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -113,9 +117,13 @@ void ComputeCellProps::compute_array()
   invoked_array = update->ntimestep;
   cells->reduce(nullptr, &mine);
   count_outside();
+  if (!homes_checked) check_homes();
 
-  for (int c = 0; c < size_array_rows; c++) {
-    double *row = array[c];
+  const std::vector<int> &home = cells->home_cells();
+  rows.assign(NCOLUMN * home.size(), 0.0);
+  for (int h = 0; h < (int) home.size(); h++) {
+    const int c = home[h];
+    double *row = &rows[NCOLUMN * h];
     row[ID] = cells->id(c);
     row[MASS] = cells->mass(c);
     row[VOLUME] = cells->volume(c);
@@ -154,15 +162,44 @@ void ComputeCellProps::compute_array()
     row[FLUIDVOL] = cells->fluid_volume(c);
     row[SPHTURGOR] = cells->sph_turgor(c);
     row[WALLTURGOR] = cells->has_wall_load() ? cells->wall_turgor(c) : 0.0;
-    row[OUTSIDE] = outside[c];
+    row[OUTSIDE] = outside[h];
     // fluid-free volume between fluid and wall: V - sum m/rho
     row[GAPVOL] = row[VOLUME] - row[FLUIDVOL];
   }
+  cells->registry().allgather(NCOLUMN, rows, all);
+  std::copy(all.begin(), all.end(), &array[0][0]);
+}
+
+/* ----------------------------------------------------------------------
+   a cell's row is made where the fixes cell/turgor keep its water: they must give it the same
+   home rank (once per run, after the fixes' init)
+------------------------------------------------------------------------- */
+
+void ComputeCellProps::check_homes()
+{
+  tagint other = 0;
+  for (auto *fix : turgor) {
+    const CellRegistry &theirs = fix->registry();
+    if (!theirs.has_homes()) continue;
+    for (int c : cells->home_cells()) {
+      const int k = theirs.index(cells->id(c));
+      if (k >= 0 && theirs.home(k) != comm->me) other = cells->id(c);
+    }
+  }
+  tagint any;
+  MPI_Allreduce(&other, &any, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (any > 0)
+    error->all(FLERR,
+               "Compute cell/props: cell {} has another home rank in a fix cell/turgor: give the "
+               "compute and the fix groups that hold the same atoms of each cell",
+               any);
+  homes_checked = true;
 }
 
 /* ----------------------------------------------------------------------
    the number of each cell's fluid atoms outside its wall: winding number < 1/2 about the atom
-   (unwrapped as the wall triangles) of the cell's triangles, gathered from all ranks. Exact
+   (unwrapped as the wall triangles) of the cell's triangles, gathered from all ranks, totalled on
+   the cell's home rank. Exact
    shortcuts: outside the ball around the corners' centroid o that holds every corner the winding
    number is 0; inside the ball around o that touches no triangle plane it is that of o.
 ------------------------------------------------------------------------- */
@@ -201,7 +238,8 @@ void ComputeCellProps::count_outside()
     o[5] = nt > 0 ? winding_number(ct, nt, o) : 0.0;
   }
 
-  std::vector<double> count(n, 0.0);
+  const CellRegistry &registry = cells->registry();
+  std::vector<double> count(registry.touched().size(), 0.0);
   const std::vector<int> &cellof = cells->cell_of_atom();
   double xu[3];
   for (int i = 0; i < atom->nlocal; i++) {
@@ -218,8 +256,7 @@ void ComputeCellProps::count_outside()
       w = o[5];
     else if (r2 <= o[3])
       w = winding_number(walls->xyz(c), walls->ntri(c), xu);
-    if (w < 0.5) count[c] += 1.0;
+    if (w < 0.5) count[registry.slot(c)] += 1.0;
   }
-  outside.resize(n);
-  MPI_Allreduce(count.data(), outside.data(), n, MPI_DOUBLE, MPI_SUM, world);
+  cells->registry().reduce(1, count, outside);
 }

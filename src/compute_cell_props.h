@@ -56,9 +56,14 @@ class ComputeCellProps : public Compute {
   std::unique_ptr<CellTriangles> walls;    // every cell's wall triangles, on every rank
   std::vector<FixCellTurgor *> turgor;
   int fluidtype;
-  std::vector<double> mine, centre, outside;    // this rank's wall triangles, per-cell results
+  std::vector<double> mine, centre;     // this rank's wall triangles, per-cell ball tests
+  std::vector<double> outside, rows;    // per home cell: fluid atoms outside, rows of the array
+  std::vector<double> all;              // every cell's row
+
+  bool homes_checked;    // the fixes cell/turgor give each cell the same home rank
 
   void count_outside();
+  void check_homes();
 };
 
 }    // namespace LAMMPS_NS

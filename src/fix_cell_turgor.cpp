@@ -53,6 +53,12 @@ static int restart_globals(int version)
   return version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
 
+// a cell's state moved between ranks at init: its restart values, turgor, psi_surface, rate
+static const int STATE_VALUES = 19;
+
+// exchange: what the network needs of each cell: psi, dpsi/dM, rate, z, M, K + P_SPH
+static const int NETWORK_VALUES = 6;
+
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
@@ -63,7 +69,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
     tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
     fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
-    max_stiffness(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
+    max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
     exchange_stiffness(0.0), accel_auto(0), accel_every(0), accel_hold(0), accel_pending(0),
     open_samples(0), sealed_samples(0), accel_tol(0.0), accel_min(1.0), accel_max(HUGE_VAL),
     accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
@@ -295,7 +301,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = 13;
+  size_vector = 14;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -423,9 +429,20 @@ int FixCellTurgor::setmask()
 
 void FixCellTurgor::init()
 {
+  // every cell's state from where it was (the last run's home ranks, or the restart file on every
+  // rank) to the cell's home rank of this run; cells no longer in the group stay on rank 0
+  std::vector<double> list;
+  gather_state(true, list);
   cells->find_cells();
   cells->init();
-  for (int c = 0; c < cells->ncell(); c++)
+  const CellRegistry &reg = cells->registry();
+  state.clear();
+  for (size_t at = 0; at < list.size(); at += STATE_VALUES) {
+    const int c = reg.index((tagint) list[at]);
+    if (c >= 0 ? reg.home(c) == comm->me : comm->me == 0)
+      unpack_state(&list[at], true, state[(tagint) list[at]]);
+  }
+  for (int c : reg.home_cells())
     if (state.find(cells->id(c)) == state.end()) {
       state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
     }
@@ -486,7 +503,8 @@ void FixCellTurgor::end_of_step()
 void FixCellTurgor::evaluate(bool transfer)
 {
   cells->reduce(gt0.empty() ? nullptr : gt0.data());
-  const int n = cells->ncell();
+  // the per-cell logic runs on each cell's home rank, for its home cells
+  const std::vector<int> &home = cells->home_cells();
   // accel auto: transfer j (at step j N; the next one when not transferring) is at position
   // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
   // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
@@ -498,13 +516,13 @@ void FixCellTurgor::evaluate(bool transfer)
       2 * (sealed ? position - every : position) >= (sealed ? hold : every);
   if (sample) (sealed ? sealed_samples : open_samples)++;
   const double dtw = sealed ? 0.0 : accel * nevery * update->dt;
-  std::vector<double> scale(n, 0.0);
+  std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
-  CellNetwork::Cells net;
-  if (junctions)
-    net = {std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
-           std::vector<double>(n)};
+  // exchange: per home cell psi, dpsi/dM, rate, z, M and K + P_SPH, gathered for the network
+  std::vector<double> mine_net(junctions ? NETWORK_VALUES * home.size() : 0);
   max_imbalance = max_stiffness = 0.0;
+  failure = Failure{cells->ncell(), ""};
+  warnings.clear();
 
   // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
   // X/X0(t) is evaluated at its end
@@ -541,22 +559,29 @@ void FixCellTurgor::evaluate(bool transfer)
                  physical_time);
   }
 
-  for (int c = 0; c < n; c++) {
+  for (int h = 0; h < (int) home.size(); h++) {
+    const int c = home[h];
     const tagint id = cells->id(c);
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
     const double area = cells->area(c);
     CellState &s = state[id];
     const double turgor = flux_turgor(c, s, transfer);
-    if (cells->get(c, CellReduce::NFLUID) == 0.0)
-      error->all(FLERR, "Fix cell/turgor: cell {} has no fluid atoms of type {} in group {}", id,
-                 fluidtype, group->names[igroup]);
+    if (cells->get(c, CellReduce::NFLUID) == 0.0) {
+      failure = Failure{c,
+                        fmt::format("Fix cell/turgor: cell {} has no fluid atoms of type {} in "
+                                    "group {}",
+                                    id, fluidtype, group->names[igroup])};
+      break;
+    }
     if (!std::isfinite(turgor) || !std::isfinite(mass) || !(mass > 0.0) || !std::isfinite(volume) ||
-        !(volume > 0.0))
-      error->all(FLERR,
-                 "Fix cell/turgor: cell {} is not physical at step {}: turgor P_T = {} Pa, volume "
-                 "V = {} m^3, fluid mass M = {} kg",
-                 id, update->ntimestep, turgor, volume, mass);
+        !(volume > 0.0)) {
+      failure = Failure{c,
+                        fmt::format("Fix cell/turgor: cell {} is not physical at step {}: "
+                                    "turgor P_T = {} Pa, volume V = {} m^3, fluid mass M = {} kg",
+                                    id, update->ntimestep, turgor, volume, mass)};
+      break;
+    }
 
     if (s.mass0 == 0.0) s.mass0 = mass;
     // dry solids S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water
@@ -590,15 +615,18 @@ void FixCellTurgor::evaluate(bool transfer)
     const double z = dtw * relax;
     if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
-    if (drive != DRIVE_CURVE) check_limit(c, s, turgor, pi, pi + psi_ext);
+    if (drive != DRIVE_CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
     if (accel_pending) first_accel = std::min(first_accel, start_accel(c, conductance, slope));
     if (sample) sample_probe(s, position, turgor, rate, conductance, sealed);
     if (junctions) {
       // advanced with the network below (doc/model.md §5.13)
-      net.psi[c] = psi_cell;
-      net.s[c] = stiffness;
-      net.rate[c] = rate;
-      net.z[c] = z;
+      double *v = &mine_net[NETWORK_VALUES * h];
+      v[0] = psi_cell;
+      v[1] = stiffness;
+      v[2] = rate;
+      v[3] = z;
+      v[4] = mass;
+      v[5] = kfluid + cells->sph_turgor(c);
       continue;
     }
     if (!transfer) continue;
@@ -607,14 +635,27 @@ void FixCellTurgor::evaluate(bool transfer)
     // M = M0 X/X0(t + dtw)
     const double dmass = drive == DRIVE_CURVE ? target * s.mass0 - mass
                                               : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
-    if (!(mass + dmass > 0.0))
-      error->all(FLERR,
-                 "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = {} "
-                 "kg, change {} kg (psi_ext = {} Pa, turgor P_T = {} Pa, pi = {} Pa)",
-                 id, update->ntimestep, mass, dmass, psi_ext, turgor, pi);
-    scale[c] = dmass / mass;
+    if (!(mass + dmass > 0.0)) {
+      failure = Failure{c,
+                        fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
+                                    "{}: fluid mass M = {} kg, change {} kg (psi_ext = {} Pa, "
+                                    "turgor P_T = {} Pa, pi = {} Pa)",
+                                    id, update->ntimestep, mass, dmass, psi_ext, turgor, pi)};
+      break;
+    }
+    scale[h] = dmass / mass;
     moved += dmass;
   }
+  // the home ranks' problems stop or warn every rank; maxima over all cells, the busiest rank
+  cells->registry().settle(failure.cell, failure.message, warnings);
+  double most[4] = {max_imbalance, max_stiffness, -first_accel,
+                    (double) cells->registry().touched().size()};
+  double all_most[4];
+  MPI_Allreduce(most, all_most, 4, MPI_DOUBLE, MPI_MAX, world);
+  max_imbalance = all_most[0];
+  max_stiffness = all_most[1];
+  first_accel = -all_most[2];
+  busiest = all_most[3];
   if (accel_pending) {
     // the first accel of auto: from the cells' state, or 'start' (doc/model.md §5.12)
     const double first = accel_start > 0.0 ? accel_start : first_accel;
@@ -627,30 +668,53 @@ void FixCellTurgor::evaluate(bool transfer)
     open_samples = sealed_samples = 0;
   }
   if (junctions) {
+    // every cell's values from its home rank, on every rank (doc/model.md §5.2): the network is
+    // solved on the gathered vectors, each home rank applies its cells' change
+    std::vector<double> all;
+    cells->registry().allgather(NETWORK_VALUES, mine_net, all);
+    const int n = cells->ncell();
+    CellNetwork::Cells net{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
+                           std::vector<double>(n)};
+    std::vector<double> mass(n), fluid(n);
+    for (int c = 0; c < n; c++) {
+      const double *v = &all[NETWORK_VALUES * c];
+      net.psi[c] = v[0];
+      net.s[c] = v[1];
+      net.rate[c] = v[2];
+      net.z[c] = v[3];
+      mass[c] = v[4];
+      fluid[c] = v[5];
+    }
     std::vector<double> dmass;
-    exchange(net, transfer, dtw, arrhenius, dmass);
-    for (int c = 0; c < (int) dmass.size(); c++) {
-      const double mass = cells->mass(c);
-      if (!(mass + dmass[c] > 0.0))
+    exchange(net, fluid, transfer, dtw, arrhenius, dmass);
+    for (int c = 0; c < (int) dmass.size(); c++)
+      if (!(mass[c] + dmass[c] > 0.0))
         error->all(FLERR,
                    "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = "
                    "{} kg, change {} kg with its neighbours (psi_cell = {} Pa, psi_ext = {} Pa)",
-                   cells->id(c), update->ntimestep, mass, dmass[c], net.psi[c], psi_ext);
-      scale[c] = dmass[c] / mass;
+                   cells->id(c), update->ntimestep, mass[c], dmass[c], net.psi[c], psi_ext);
+    for (int h = 0; h < (int) home.size() && !dmass.empty(); h++) {
+      const int c = home[h];
+      scale[h] = dmass[c] / mass[c];
       moved += dmass[c];
     }
   }
   if (!transfer) return;
 
-  // m_i <- m_i (1 + dM/M) on the cell's fluid atoms, then to the ghosts
+  // m_i <- m_i (1 + dM/M) on the cell's fluid atoms, dM/M from the home rank, then to the ghosts
+  const CellRegistry &reg = cells->registry();
+  std::vector<double> factor;
+  reg.scatter(1, scale, factor);
   double *rmass = atom->rmass;
   const int *type = atom->type;
   const std::vector<int> &cellof = cells->cell_of_atom();
   for (int i = 0; i < atom->nlocal; i++)
-    if (cellof[i] >= 0 && type[i] == fluidtype) rmass[i] *= 1.0 + scale[cellof[i]];
+    if (cellof[i] >= 0 && type[i] == fluidtype) rmass[i] *= 1.0 + factor[reg.slot(cellof[i])];
   CellCompat::forward_comm(comm, this);
 
-  water_moved += moved;
+  double all_moved;
+  MPI_Allreduce(&moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
+  water_moved += all_moved;
   if (drive != DRIVE_CURVE) physical_time += dtw;
   if (accel_auto && position == every + hold - 1) adapt_accel(every);
 }
@@ -662,8 +726,8 @@ void FixCellTurgor::evaluate(bool transfer)
    area per bond (the bond type's A, or the pair's from a junction areas file).
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
-                             std::vector<double> &dmass)
+void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid,
+                             bool transfer, double dtw, double factor, std::vector<double> &dmass)
 {
   const int n = cells->ncell();
   std::vector<tagint> ids(n);
@@ -684,11 +748,11 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
           FLERR,
           "Fix cell/turgor: cell {} cannot exchange water: its water potential does not rise "
           "with its water, dpsi/dM = {} Pa/kg (K + P_SPH = {} Pa)",
-          cells->id(c), in.s[c], kfluid + cells->sph_turgor(c));
+          cells->id(c), in.s[c], fluid[c]);
   exchange_stiffness = network->stiffness(dtw, in.s);
   std::vector<double> rate;
   network->rates(in.psi, rate);
-  for (int c = 0; c < n; c++) state[cells->id(c)].rate += rate[c];
+  for (int c : cells->home_cells()) state[cells->id(c)].rate += rate[c];
   if (!transfer) return;
 
   CellNetwork::Change change;
@@ -816,7 +880,8 @@ void FixCellTurgor::adapt_accel(bigint every)
 {
   double factor = cells->ncell() > 0 ? 2.0 : 1.0;
   bool first = true;
-  for (int c = 0; c < cells->ncell(); c++) {
+  double lag = 0.0, lag_se = 0.0;
+  for (int c : cells->home_cells()) {
     const CellState &s = state[cells->id(c)];
     double e, se, f = 1.0;
     if (cell_lag(s, every, e, se)) {
@@ -824,14 +889,28 @@ void FixCellTurgor::adapt_accel(bigint every)
         f = std::max(0.5, accel_tol / e);
       else if (e + 2.0 * se < accel_tol)
         f = e + 2.0 * se > 0.0 ? std::min(2.0, accel_tol / (e + 2.0 * se)) : 2.0;
-      if (first || e > lag_estimate) {
-        lag_estimate = e;
-        lag_error = se;
+      if (first || e > lag) {
+        lag = e;
+        lag_se = se;
         first = false;
       }
     }
     factor = std::min(factor, f);
   }
+  // over all ranks: the most restrictive factor, the largest lag (the lowest rank's of equals)
+  double all_factor;
+  MPI_Allreduce(&factor, &all_factor, 1, MPI_DOUBLE, MPI_MIN, world);
+  factor = all_factor;
+  const double mine[3] = {first ? 0.0 : 1.0, lag, lag_se};
+  std::vector<double> lags(3 * comm->nprocs);
+  MPI_Allgather(mine, 3, MPI_DOUBLE, lags.data(), 3, MPI_DOUBLE, world);
+  first = true;
+  for (int p = 0; p < comm->nprocs; p++)
+    if (lags[3 * p] > 0.0 && (first || lags[3 * p + 1] > lag_estimate)) {
+      lag_estimate = lags[3 * p + 1];
+      lag_error = lags[3 * p + 2];
+      first = false;
+    }
   accel = std::min(accel_max, std::max(accel_min, accel * factor));
   open_samples = sealed_samples = 0;
 }
@@ -893,14 +972,15 @@ double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
 }
 
 /* ----------------------------------------------------------------------
-   stop or warn when the cell's thin Neo-Hookean wall cannot hold the turgor (doc/model.md §6)
+   stop (false, with the failure set) or warn when the cell's thin Neo-Hookean wall cannot hold the
+   turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, double demand)
+bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, double demand)
 {
   const double gt = cells->mean_gt0(c);
   const double area0 = cells->ref_area(c);
-  if (gt0.empty() || gt <= 0.0 || area0 <= 0.0) return;
+  if (gt0.empty() || gt <= 0.0 || area0 <= 0.0) return true;
 
   const double r0 = sqrt(area0 / (4.0 * MY_PI));
   // P_max = (2 G t0 / R0) (6/7) 7^(-1/6) = 0.6197 (2 G t0 / R0) at stretch 7^(1/6)
@@ -915,16 +995,20 @@ void FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, d
                       "with turgor below pi + psi_ext",
                       stretch);
   else
-    return;
+    return true;
 
   const std::string message = fmt::format(
       "Fix cell/turgor: cell {} cannot hold its turgor: {}: turgor P_T = {:.6g} Pa, pi = {:.6g} "
       "Pa, psi_ext = {:.6g} Pa, limit-point pressure P_max = 0.6197 (2 G t0 / R0) = {:.6g} Pa "
       "(G t0 = {:.4g} N/m, R0 = {:.4g} m)",
       cells->id(c), why, turgor, pi, demand - pi, pmax, gt, r0);
-  if (limit == LIMIT_ERROR) error->all(FLERR, message);
-  if (!s.warned && comm->me == 0) error->warning(FLERR, message);
+  if (limit == LIMIT_ERROR) {
+    failure = Failure{c, message};
+    return false;
+  }
+  if (!s.warned) warnings.push_back(message);
   s.warned = 1;
+  return true;
 }
 
 /* ----------------------------------------------------------------------
@@ -976,15 +1060,17 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
    5 max dtw k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s),
    8 accel, 9 lag e of the last accel auto window (max over cells), 10 its standard error,
    11 water moved between cells (kg), 12 the exchange's net mass change at the last transfer (kg,
-   0 to round-off), 13 max dt_w g_ij (s_i + s_j) over junctions
+   0 to round-off), 13 max dt_w g_ij (s_i + s_j) over junctions, 14 the most cells one rank
+   summed at the last evaluation
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved,       physical_time, (double) cells->ncell(), max_imbalance,
-                           max_stiffness,     temperature,   mass_transfer,           accel,
-                           lag_estimate,      lag_error,     water_exchanged,         exchange_net,
-                           exchange_stiffness};
+  const double values[] = {water_moved,        physical_time,   (double) cells->ncell(),
+                           max_imbalance,      max_stiffness,   temperature,
+                           mass_transfer,      accel,           lag_estimate,
+                           lag_error,          water_exchanged, exchange_net,
+                           exchange_stiffness, busiest};
   return values[n];
 }
 
@@ -1031,10 +1117,17 @@ int FixCellTurgor::modify_param(int narg, char **arg)
 
 void FixCellTurgor::write_restart(FILE *fp)
 {
+  // every cell's state from its home rank, in ascending ID (a cell's copies on every rank when no
+  // run followed read_restart: the first)
+  std::vector<double> cellstate;
+  gather_state(false, cellstate);
   if (comm->me != 0) return;
+  std::map<tagint, size_t> order;
+  for (size_t at = 0; at < cellstate.size(); at += restart_values(RESTART_VERSION))
+    order.emplace((tagint) cellstate[at], at);
   // version 1 (no marker) began with the number of cells >= 0; later versions with -version
   std::vector<double> list = {(double) -RESTART_VERSION,
-                              (double) state.size(),
+                              (double) order.size(),
                               physical_time,
                               water_moved,
                               accel_auto ? accel : 0.0,
@@ -1043,15 +1136,9 @@ void FixCellTurgor::write_restart(FILE *fp)
                               lag_estimate,
                               lag_error,
                               water_exchanged};
-  for (const auto &kv : state) {
-    list.push_back((double) kv.first);
-    list.push_back(kv.second.mass0);
-    list.push_back(kv.second.pi0);
-    list.push_back(kv.second.warned);
-    list.push_back(kv.second.offset);
-    list.push_back(kv.second.solids);
-    list.insert(list.end(), kv.second.probe, kv.second.probe + NPROBE);
-  }
+  for (const auto &kv : order)
+    list.insert(list.end(), &cellstate[kv.second],
+                &cellstate[kv.second] + restart_values(RESTART_VERSION));
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -1100,6 +1187,7 @@ void FixCellTurgor::restart(char *buf)
     const double solids = version >= 3 ? v[5] : 0.0;
     CellState cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
     if (adapted) std::copy(v + 6, v + 6 + NPROBE, cell.probe);
+    // every rank holds every cell until init() keeps its home cells
     state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;
     other_solids = other_solids ||
@@ -1132,4 +1220,62 @@ int FixCellTurgor::pack_forward_comm(int n, int *list, double *buf, int, int *)
 void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
 {
   for (int k = 0; k < n; k++) atom->rmass[first + k] = buf[k];
+}
+
+/* ----------------------------------------------------------------------
+   this rank's cell states, restart_values(RESTART_VERSION) each: ID, mass0, pi0, warned, offset,
+   solids, the accel auto sums; full: + the last evaluation's turgor, psi_surface and rate
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::pack_state(std::vector<double> &list, bool full) const
+{
+  list.clear();
+  for (const auto &kv : state) {
+    const CellState &s = kv.second;
+    list.insert(list.end(),
+                {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
+    list.insert(list.end(), s.probe, s.probe + NPROBE);
+    if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
+  }
+}
+
+void FixCellTurgor::unpack_state(const double *v, bool full, CellState &s) const
+{
+  s = CellState{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
+  std::copy(v + 6, v + 6 + NPROBE, s.probe);
+  if (!full) return;
+  s.turgor = v[6 + NPROBE];
+  s.psi_surface = v[7 + NPROBE];
+  s.rate = v[8 + NPROBE];
+}
+
+/* ----------------------------------------------------------------------
+   every rank's cell states (full with everywhere) on every rank, or on rank 0 only
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::gather_state(bool everywhere, std::vector<double> &list) const
+{
+  std::vector<double> mine;
+  pack_state(mine, everywhere);
+  const int n = (int) mine.size(), nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  if (everywhere)
+    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  else
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  list.resize(everywhere || comm->me == 0 ? displs.back() + counts.back() : 0);
+  if (everywhere)
+    MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, list.data(), counts.data(), displs.data(),
+                   MPI_DOUBLE, world);
+  else
+    MPI_Gatherv(mine.data(), n, MPI_DOUBLE, list.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                0, world);
+}
+
+/* ---------------------------------------------------------------------- */
+
+const CellRegistry &FixCellTurgor::registry() const
+{
+  return cells->registry();
 }

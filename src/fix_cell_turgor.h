@@ -20,6 +20,7 @@ namespace LAMMPS_NS {
 
 class CellJunctions;
 class CellReduce;
+class CellRegistry;
 
 class FixCellTurgor : public Fix {
  public:
@@ -48,6 +49,8 @@ class FixCellTurgor : public Fix {
   bool osmotic(tagint cell, double mass, double &pi) const;
   bool turgor(tagint cell, double &pt) const;
   bool water(tagint cell, double mass, Water &w) const;
+  // the cells and their home ranks, where the per-cell state is kept (cell_registry.h)
+  const CellRegistry &registry() const;
 
  protected:
   enum Osmotic { FIXED = 0, VANTHOFF = 1 };
@@ -85,10 +88,18 @@ class FixCellTurgor : public Fix {
   double kfluid;         // K in use
   int osmotic_law, limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
-  std::map<tagint, CellState> state;
-  std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
+  std::map<tagint, CellState> state;    // the home cells' (and on rank 0 unknown cells') state
+  std::vector<double> gt0;              // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
+  double busiest;    // the most cells one rank summed at the last evaluation
+  // a cell's problem found on its home rank, stopping every rank (CellRegistry::settle)
+  struct Failure {
+    int cell;
+    std::string message;
+  };
+  Failure failure;                      // the first of this rank's home cells at this evaluation
+  std::vector<std::string> warnings;    // of this rank's home cells at this evaluation
 
   // exchange: water between cells through their junctions at L_cc (doc/model.md §5.13)
   CellQuantity lcc;
@@ -106,8 +117,11 @@ class FixCellTurgor : public Fix {
   double lag_estimate, lag_error;    // of the last adaptation window
 
   void evaluate(bool transfer);
-  void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
-                std::vector<double> &dmass);
+  void pack_state(std::vector<double> &list, bool full) const;
+  void unpack_state(const double *v, bool full, CellState &cell) const;
+  void gather_state(bool everywhere, std::vector<double> &list) const;
+  void exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid, bool transfer,
+                double dtw, double factor, std::vector<double> &dmass);
   int parse_accel(int narg, char **arg, const std::string &command);
   double start_accel(int c, double conductance, double slope) const;
   bigint accel_window() const;
@@ -117,7 +131,7 @@ class FixCellTurgor : public Fix {
   bool cell_lag(const CellState &s, bigint every, double &lag, double &error) const;
   void adapt_accel(bigint every);
   double offset_time() const;
-  void check_limit(int c, CellState &s, double turgor, double pi, double demand);
+  bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
   double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
