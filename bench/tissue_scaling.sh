@@ -6,7 +6,9 @@
 # "Per MPI rank memory" line, and the cost per step of fix cell/turgor's per-cell work (one
 # CellReduce::reduce() with its MPI_Allreduce over all cells, then the transfer) against the number
 # of cells (bench/cell_reduce_cost.lmp: tiny lumped cells, no pair forces). Prints the load average
-# with each row: the machine may be shared. About 15 minutes on an idle 2-core machine.
+# with each row and LAMMPS's "% CPU use" (the share of the wall-clock the ranks got): on a shared
+# machine the rate per CPU second (rate / CPU share) estimates the idle-machine rate, but Open MPI's
+# busy waiting counts as CPU use, so the 2-rank efficiency from it is an upper bound. About 15 minutes on an idle 2-core machine.
 #   bash bench/tissue_scaling.sh [quick]      (quick: the 27-cell rows and 10^3 cells only)
 # Environment: CELLSPH_BUILD (build folder), OUT (work folder, default /tmp/cellsph-bench/tissue).
 set -euo pipefail
@@ -28,7 +30,8 @@ import re, sys
 log = open(sys.argv[1]).read()
 loop = re.findall(r"Loop time of ([0-9.e+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", log)[-1]
 mem = re.findall(r"Per MPI rank memory allocation \(min/avg/max\) = [0-9.]+ \| [0-9.]+ \| ([0-9.]+) Mbytes", log)[-1]
-print(*loop, mem)
+cpu = re.findall(r"([0-9.]+)% CPU use with", log)[-1]
+print(*loop, mem, cpu)
 PY
 }
 
@@ -38,17 +41,17 @@ run_tissue() {   # name ranks tissue-options boundary balance -> one table row
     -var bal "$bal" -var proc "* * *" -log "$log" -screen none)
   [ "$np" -gt 1 ] && cmd=(mpirun -np "$np" "${cmd[@]}")
   local l0; l0=$(load)
-  "${cmd[@]}"
-  read -r t p n a mem < <(loop_line "$log")
+  "${cmd[@]}" > /dev/null
+  read -r t p n a mem cpu < <(loop_line "$log")
   python3 -c "
-t, p, n, a, mem = $t, $p, $n, $a, $mem
-print(f'| $name | {p} | {\"yes\" if $bal else \"no\"} | {a} | {n} | {t:.1f} | {a*n/t/p:.3g} | {mem*p*1e6/a/1024:.2f} | $l0 |')"
+t, p, n, a, mem, cpu = $t, $p, $n, $a, $mem, $cpu
+print(f'| $name | {p} | {\"yes\" if $bal else \"no\"} | {a} | {n} | {t:.1f} | {a*n/t/p:.3g} | {cpu:.0f} | {a*n/t/p/(cpu/100):.3g} | {mem*p*1e6/a/1024:.2f} | $l0 |')"
 }
 
 echo "## Tissue: particle-steps per second per core (300 timed steps after 100)"
 echo
-echo "| tissue | ranks | fix balance | particles | steps | loop time (s) | particle-steps/s/core | memory per particle (kB) | load average at start |"
-echo "|---|---:|---|---:|---:|---:|---:|---:|---:|"
+echo "| tissue | ranks | fix balance | particles | steps | loop time (s) | particle-steps/s/core | CPU use (%) | particle-steps per CPU second per rank | memory per particle (kB) | load average at start |"
+echo "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 cases=("block27|--count 27|p p p" "slab27|--cells 3 3 3 --slab z|p p f")
 [ "$mode" = quick ] || cases+=("block64|--count 64|p p p" "slab64|--cells 4 4 4 --slab z|p p f")
 for c in "${cases[@]}"; do
@@ -71,7 +74,7 @@ for n in "${sizes[@]}"; do
     cmd=("${lmp[@]}" -in "$here/cell_reduce_cost.lmp" "${vars[@]}" -var n "$n" -log "$log" -screen none)
     [ "$np" -gt 1 ] && cmd=(mpirun -np "$np" "${cmd[@]}")
     l0=$(load)
-    "${cmd[@]}"
+    "${cmd[@]}" > /dev/null
     python3 - "$log" "$n" "$np" "$l0" <<'PY'
 import re, sys
 log, n, np_, l0 = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
