@@ -9,6 +9,7 @@
 #include "bond_cell_lamella.h"
 
 #include "atom.h"
+#include "cell_bond.h"
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "comm.h"
@@ -105,22 +106,10 @@ void BondCellLamella::compute(int eflag, int vflag)
     if (eflag) ebond = 0.5 * kbond[type] * delta * delta;
 
     // F^d = -gamma ((v1 - v2) . e) e, on the opening rate only (doc/model.md §4.3)
-    if (gamma[type] > 0.0) {
-      const double vr = (v[i1][0] - v[i2][0]) * delx + (v[i1][1] - v[i2][1]) * dely +
-          (v[i1][2] - v[i2][2]) * delz;
-      fbond -= gamma[type] * vr / (r * r);
-    }
+    if (gamma[type] > 0.0)
+      fbond += CellBond::damping(v[i1], v[i2], delx, dely, delz, r, gamma[type]);
 
-    if (newton_bond || i1 < nlocal) {
-      f[i1][0] += delx * fbond;
-      f[i1][1] += dely * fbond;
-      f[i1][2] += delz * fbond;
-    }
-    if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= delx * fbond;
-      f[i2][1] -= dely * fbond;
-      f[i2][2] -= delz * fbond;
-    }
+    CellBond::apply(f, i1, i2, nlocal, newton_bond, fbond, delx, dely, delz);
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
   }
 }
@@ -215,16 +204,11 @@ void BondCellLamella::init_style()
                "Bond style cell/lamella needs molecule (cell) IDs: use atom_style angle "
                "(or bond, molecular, full)");
 
-  bool damped = false;
   for (int i = 1; i <= atom->nbondtypes; i++) {
     kbond[i] = stiffness[i] * area[i];        // k = K A
     dcrit[i] = strength[i] / stiffness[i];    // delta_c = sigma_c / K
-    damped = damped || gamma[i] > 0.0;
   }
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Bond style cell/lamella with damping gamma > 0 needs ghost velocities: use "
-               "'comm_modify vel yes'");
+  CellBond::require_ghost_velocity(lmp, "cell/lamella", gamma, atom->nbondtypes);
 
   init_history();
 

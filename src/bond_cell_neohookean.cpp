@@ -8,6 +8,7 @@
 #include "bond_cell_neohookean.h"
 
 #include "atom.h"
+#include "cell_bond.h"
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "comm.h"
@@ -83,23 +84,11 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
     const double l0 = rest_length(i1, i2);
     double fbond = -stretch_force(type, r, l0, bond_area(i1, i2, l0), ebond) / r;
 
-    // F^d = -gamma ((v1 - v2) . e) e: damps stretching, not rigid motion (doc/model.md §4.3)
-    if (gamma[type] > 0.0) {
-      const double vr = (v[i1][0] - v[i2][0]) * delx + (v[i1][1] - v[i2][1]) * dely +
-          (v[i1][2] - v[i2][2]) * delz;
-      fbond -= gamma[type] * vr / (r * r);
-    }
+    // F^d = -gamma ((v1 - v2) . e) e, damps stretching, not rigid motion (doc/model.md §4.3)
+    if (gamma[type] > 0.0)
+      fbond += CellBond::damping(v[i1], v[i2], delx, dely, delz, r, gamma[type]);
 
-    if (newton_bond || i1 < nlocal) {
-      f[i1][0] += delx * fbond;
-      f[i1][1] += dely * fbond;
-      f[i1][2] += delz * fbond;
-    }
-    if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= delx * fbond;
-      f[i2][1] -= dely * fbond;
-      f[i2][2] -= delz * fbond;
-    }
+    CellBond::apply(f, i1, i2, nlocal, newton_bond, fbond, delx, dely, delz);
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
   }
 }
@@ -256,15 +245,8 @@ void BondCellNeoHookean::init_style()
   if (iaref >= 0 && (flag != 1 || cols != 0))
     error->all(FLERR, "Bond style cell/neohookean: per-atom 'aref' must be a d_aref vector");
 
-  bool damped = false;
-  for (int i = 1; i <= atom->nbondtypes; i++) {
-    gt0[i] = shear[i] * thickness[i];
-    damped = damped || gamma[i] > 0.0;
-  }
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Bond style cell/neohookean with damping gamma > 0 needs ghost velocities: "
-               "use 'comm_modify vel yes'");
+  for (int i = 1; i <= atom->nbondtypes; i++) gt0[i] = shear[i] * thickness[i];
+  CellBond::require_ghost_velocity(lmp, "cell/neohookean", gamma, atom->nbondtypes);
 
   std::vector<double> lmax(atom->nbondtypes + 1, 0.0);
   for (int i = 0; i < atom->nlocal; i++)

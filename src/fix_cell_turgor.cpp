@@ -11,6 +11,7 @@
 #include "atom.h"
 #include "bond.h"
 #include "cell_compat.h"
+#include "cell_junctions.h"
 #include "cell_params.h"
 #include "cell_reduce.h"
 #include "cell_restart.h"
@@ -33,8 +34,9 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-// 4: + accel auto state; 3: + solids per cell; 2: begins with -version; 1: none
-static const int RESTART_VERSION = 4;
+// 5: + water exchanged between cells; 4: + accel auto state; 3: + solids per cell; 2: begins with
+// -version; 1: none
+static const int RESTART_VERSION = 5;
 
 // restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3), the
 // accel auto cycle's sums (4: NPROBE = 10 values)
@@ -44,10 +46,11 @@ static int restart_values(int version)
 }
 
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
-// accel (0: not auto), open and sealed samples, lag estimate and its error (4)
+// accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
+// between cells (5)
 static int restart_globals(int version)
 {
-  return version >= 4 ? 7 : 2;
+  return version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -60,7 +63,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
     tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
     fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
-    max_stiffness(0.0), accel_auto(0), accel_every(0), accel_hold(0), accel_pending(0),
+    max_stiffness(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
+    exchange_stiffness(0.0), accel_auto(0), accel_every(0), accel_hold(0), accel_pending(0),
     open_samples(0), sealed_samples(0), accel_tol(0.0), accel_min(1.0), accel_max(HUGE_VAL),
     accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
 {
@@ -72,6 +76,10 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
 
   bool lp_set = false, pi0_set = false, temp_set = false;
+  int bondtype = 0;
+  std::string areas;         // 'exchange ... areas FILE'
+  bool lcc_file = false;     // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
+  double file_lcc = -1.0;    // turgor_Lcc of the last 'file', -1 if none
   std::string measure = "wall", drives;
   int ndrive = 0;
   int iarg = 4;
@@ -178,6 +186,23 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       rhow = utils::numeric(FLERR, value, false, lmp);
       if (rhow <= 0.0)
         error->all(FLERR, "Fix cell/turgor: water density rhow = {} must be > 0", rhow);
+    } else if (key == "exchange") {
+      char **v = values(key, 3);
+      if (strcmp(v[1], "bondtype") != 0)
+        error->all(FLERR,
+                   "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
+                   v[0], v[1]);
+      lcc_file = strcmp(v[0], "file") == 0;
+      if (!lcc_file) parse_quantity(lcc, v[0]);
+      if (!lcc_file && !lcc.is_variable() && lcc.value < 0.0)
+        error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0",
+                   lcc.value);
+      bondtype = utils::inumeric(FLERR, v[2], false, lmp);
+      used = 4;
+      if (iarg + 5 < narg && strcmp(arg[iarg + 4], "areas") == 0) {
+        areas = arg[iarg + 5];
+        used = 6;
+      }
     } else if (key == "accel") {
       used = 1 + parse_accel(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
     } else if (key == "bulk") {
@@ -207,6 +232,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       lp_set = pi0_set = true;
       // optional drying keys (doc/fix_cell_turgor.md)
       if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea");
+      if (params.has("turgor_Lcc")) file_lcc = params.nonnegative("turgor_Lcc");
       if (params.has("turgor_solids")) solids_fraction = params.positive("turgor_solids");
       if (params.has("turgor_gab_Xm") || params.has("turgor_gab_C") || params.has("turgor_gab_K")) {
         gab_xm = params.number("turgor_gab_Xm");
@@ -255,12 +281,31 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
                "flux that the mechanics could delay)");
 
+  if (lcc_file) {
+    if (file_lcc < 0.0)
+      error->all(FLERR,
+                 "Fix cell/turgor: 'exchange file' takes L_cc from the key turgor_Lcc of a "
+                 "parameter file: give 'file name' with that key");
+    lcc = CellQuantity{file_lcc, "", -1};
+  }
+  if (bondtype && drive == DRIVE_CURVE)
+    error->all(FLERR,
+               "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
+               "cell's water)");
+  if (bondtype && accel_auto)
+    error->all(FLERR,
+               "Fix cell/turgor: exchange does not work with accel auto: give accel a number");
+
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
   if (surface_group >= 0) cells->set_surface(group->bitmask[surface_group]);
+  if (bondtype) {
+    junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
+    network = std::make_unique<CellNetwork>();
+  }
 
   vector_flag = 1;
-  size_vector = 10;
+  size_vector = 13;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -394,8 +439,10 @@ void FixCellTurgor::init()
     if (state.find(cells->id(c)) == state.end()) {
       state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
     }
-  for (CellQuantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
+  for (CellQuantity *in :
+       {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length, &lcc})
     in->resolve(lmp, "Fix cell/turgor: variable");
+  if (junctions) junctions->init();
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -463,6 +510,10 @@ void FixCellTurgor::evaluate(bool transfer)
   const double dtw = sealed ? 0.0 : accel * nevery * update->dt;
   std::vector<double> scale(n, 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
+  CellNetwork::Cells net;
+  if (junctions)
+    net = {std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
+           std::vector<double>(n)};
   max_imbalance = max_stiffness = 0.0;
 
   // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
@@ -472,8 +523,9 @@ void FixCellTurgor::evaluate(bool transfer)
     error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0 (step {})", t,
                update->ntimestep);
   temperature = t;
-  // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)) (doc/model.md §5.9)
-  const double lpt = lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, tref) : 1.0);
+  // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
+  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, tref) : 1.0;
+  const double lpt = lp * arrhenius;
   double psi_ext = 0.0, hm = 0.0, rho_sat = 0.0, rho_air = 0.0, target = 0.0;
   if (drive == DRIVE_PSI) {
     psi_ext = psi.get(lmp);
@@ -544,14 +596,22 @@ void FixCellTurgor::evaluate(bool transfer)
     }
     s.rate = rate;
     // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
-    const double relax =
-        conductance * std::max(0.0, (kfluid + cells->sph_turgor(c)) / mass + slope);
+    const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
+    const double relax = conductance * std::max(0.0, stiffness);
     const double z = dtw * relax;
     if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
     if (drive != DRIVE_CURVE) check_limit(c, s, turgor, pi, pi + psi_ext);
     if (accel_pending) first_accel = std::min(first_accel, start_accel(c, conductance, slope));
     if (sample) sample_probe(s, position, turgor, rate, conductance, sealed);
+    if (junctions) {
+      // advanced with the network below (doc/model.md §5.13)
+      net.psi[c] = psi_cell;
+      net.s[c] = stiffness;
+      net.rate[c] = rate;
+      net.z[c] = z;
+      continue;
+    }
     if (!transfer) continue;
 
     // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
@@ -577,6 +637,20 @@ void FixCellTurgor::evaluate(bool transfer)
     // the current cycle's samples were made at another accel
     open_samples = sealed_samples = 0;
   }
+  if (junctions) {
+    std::vector<double> dmass;
+    exchange(net, transfer, dtw, arrhenius, dmass);
+    for (int c = 0; c < (int) dmass.size(); c++) {
+      const double mass = cells->mass(c);
+      if (!(mass + dmass[c] > 0.0))
+        error->all(FLERR,
+                   "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = "
+                   "{} kg, change {} kg with its neighbours (psi_cell = {} Pa, psi_ext = {} Pa)",
+                   cells->id(c), update->ntimestep, mass, dmass[c], net.psi[c], psi_ext);
+      scale[c] = dmass[c] / mass;
+      moved += dmass[c];
+    }
+  }
   if (!transfer) return;
 
   // m_i <- m_i (1 + dM/M) on the cell's fluid atoms, then to the ghosts
@@ -590,6 +664,57 @@ void FixCellTurgor::evaluate(bool transfer)
   water_moved += moved;
   if (drive != DRIVE_CURVE) physical_time += dtw;
   if (accel_auto && position == every + hold - 1) adapt_accel(every);
+}
+
+/* ----------------------------------------------------------------------
+   exchange: the cells' own transfer and the water between them through their junctions, one
+   implicit step of the network over dtw (doc/model.md §5.13); dmass per cell with transfer, else
+   only the start-of-step rates and the stiffness. g_ij = rho_w L_cc A_ij, A_ij = its bonds x the
+   area per bond (the bond type's A, or the pair's from a junction areas file).
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
+                             std::vector<double> &dmass)
+{
+  const int n = cells->ncell();
+  std::vector<tagint> ids(n);
+  for (int c = 0; c < n; c++) ids[c] = cells->id(c);
+  junctions->gather(ids, !transfer);
+  const double l = lcc.get(lmp);
+  if (!(l >= 0.0))
+    error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 (step {})",
+               l, update->ntimestep);
+  std::vector<CellNetwork::Edge> edges;
+  // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13)
+  const double g = rhow * l * factor;
+  for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, g * j.area});
+  network->set_edges(n, std::move(edges));
+  for (int c = 0; c < n; c++)
+    if (!(in.s[c] > 0.0))
+      error->all(
+          FLERR,
+          "Fix cell/turgor: cell {} cannot exchange water: its water potential does not rise "
+          "with its water, dpsi/dM = {} Pa/kg (K + P_SPH = {} Pa)",
+          cells->id(c), in.s[c], kfluid + cells->sph_turgor(c));
+  exchange_stiffness = network->stiffness(dtw, in.s);
+  std::vector<double> rate;
+  network->rates(in.psi, rate);
+  for (int c = 0; c < n; c++) state[cells->id(c)].rate += rate[c];
+  if (!transfer) return;
+
+  CellNetwork::Change change;
+  if (!network->step(dtw, in, change))
+    error->all(
+        FLERR,
+        "Fix cell/turgor: the water network's solver did not converge at step {} ({} iterations)",
+        update->ntimestep, network->iterations());
+  dmass.resize(n);
+  exchange_net = 0.0;
+  for (int c = 0; c < n; c++) {
+    dmass[c] = change.own[c] + change.exchange[c];
+    exchange_net += change.exchange[c];
+  }
+  water_exchanged += change.gross;
 }
 
 /* ----------------------------------------------------------------------
@@ -860,14 +985,17 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 /* ----------------------------------------------------------------------
    1 water moved into the cells (kg), 2 physical time (s), 3 cells, 4 max |psi_ext - psi_cell| (Pa),
    5 max dtw k: an explicit update would be unstable above 2, 6 temperature T (K), 7 h_m (m/s),
-   8 accel, 9 lag e of the last accel auto window (max over cells), 10 its standard error
+   8 accel, 9 lag e of the last accel auto window (max over cells), 10 its standard error,
+   11 water moved between cells (kg), 12 the exchange's net mass change at the last transfer (kg,
+   0 to round-off), 13 max dt_w g_ij (s_i + s_j) over junctions
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved,   physical_time, (double) cells->ncell(), max_imbalance,
-                           max_stiffness, temperature,   mass_transfer,           accel,
-                           lag_estimate,  lag_error};
+  const double values[] = {water_moved,       physical_time, (double) cells->ncell(), max_imbalance,
+                           max_stiffness,     temperature,   mass_transfer,           accel,
+                           lag_estimate,      lag_error,     water_exchanged,         exchange_net,
+                           exchange_stiffness};
   return values[n];
 }
 
@@ -889,6 +1017,10 @@ int FixCellTurgor::modify_param(int narg, char **arg)
     const int used = 1 + parse_accel(narg - 1, &arg[1], "Fix_modify cell/turgor");
     if (accel_auto && drive == DRIVE_CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
+    if (accel_auto && junctions)
+      error->all(FLERR,
+                 "Fix_modify cell/turgor: exchange does not work with accel auto: give accel a "
+                 "number");
     return used;
   }
   const double value = key == "psi" ? 0.0 : utils::numeric(FLERR, arg[1], false, lmp);
@@ -920,7 +1052,8 @@ void FixCellTurgor::write_restart(FILE *fp)
                               (double) open_samples,
                               (double) sealed_samples,
                               lag_estimate,
-                              lag_error};
+                              lag_error,
+                              water_exchanged};
   for (const auto &kv : state) {
     list.push_back((double) kv.first);
     list.push_back(kv.second.mass0);
@@ -962,6 +1095,7 @@ void FixCellTurgor::restart(char *buf)
     lag_estimate = list[6];
     lag_error = list[7];
   }
+  if (version >= 5) water_exchanged = list[8];
   state.clear();
   bool other_pi0 = false, other_solids = false;
   const int nvalues = restart_values(version);

@@ -7,6 +7,7 @@
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
+#include "cell_network.h"
 #include "cell_quantity.h"
 #include "fix.h"
 
@@ -17,6 +18,7 @@
 
 namespace LAMMPS_NS {
 
+class CellJunctions;
 class CellReduce;
 
 class FixCellTurgor : public Fix {
@@ -89,6 +91,14 @@ class FixCellTurgor : public Fix {
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
 
+  // exchange: water between cells through their junctions at L_cc (doc/model.md §5.13)
+  CellQuantity lcc;
+  std::unique_ptr<CellJunctions> junctions;    // nullptr without 'exchange'
+  std::unique_ptr<CellNetwork> network;
+  double water_exchanged;       // sum over transfers and junctions of |water moved| (kg)
+  double exchange_net;          // sum over cells of the exchange's mass change, last transfer (kg)
+  double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
+
   // accel auto: tolerance, floor, ceiling, start (0: from the cell's state), transfers per
   // adaptation; pending: accel still to be set from the cells' state at the next evaluation
   int accel_auto, accel_every, accel_hold, accel_pending;
@@ -97,6 +107,8 @@ class FixCellTurgor : public Fix {
   double lag_estimate, lag_error;    // of the last adaptation window
 
   void evaluate(bool transfer);
+  void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
+                std::vector<double> &dmass);
   int parse_accel(int narg, char **arg, const std::string &command);
   double start_accel(int c, double conductance, double slope) const;
   bigint accel_window() const;

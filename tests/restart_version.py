@@ -14,8 +14,9 @@ writes it (int length, name, NUL) followed by the marker -version (src/*.cpp RES
 an int for pair cell/sph, a double for pair cell/wall, bonds cell/neohookean and cell/lamella and
 dihedral cell/bending, a double after
 the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
-then. A fix cell/turgor payload of version 4 (4 more global values: accel auto state; 16 values
-per cell) or 3 (6 per cell) loses what came after version 2 (the accel auto state, the dry solids)
+then. A fix cell/turgor payload of version 5 (6 more global values: accel auto state, water
+exchanged between cells; 16 values per cell), 4 (5 more global values; 16 per cell) or 3 (6 per
+cell) loses what came after version 2 (the exchanged water, the accel auto state, the dry solids)
 when made unversioned or older, so that it has the layout of versions 1 and 2 (5 per cell).
 """
 import struct
@@ -46,12 +47,13 @@ def find_marker(data, style):
 
 
 def turgor_to_version2(data, at, version):
-    """Keep the version-2 values of the version-3 or -4 cell/turgor payload whose marker is at
+    """Keep the version-2 values of the version-3, -4 or -5 cell/turgor payload whose marker is at
     offset at: count, physical time, water moved [, accel, open and sealed samples, lag, its error
-    (4)], then per cell ID mass0 pi0 warned offset [solids (3, 4) and 10 accel auto sums (4)]."""
+    (4, 5)] [, water exchanged (5)], then per cell ID mass0 pi0 warned offset [solids (3-5) and 10
+    accel auto sums (4, 5)]."""
     (count,) = struct.unpack_from("=d", data, at + 8)
     n = int(count)
-    extra, per = (5, 16) if version == 4 else (0, 6)
+    extra, per = {5: (6, 16), 4: (5, 16), 3: (0, 6)}[version]
     end = at + 8 * (4 + extra + per * n)
     values = list(struct.unpack_from(f"={per * n}d", data, at + 8 * (4 + extra)))
     kept = [v for k, v in enumerate(values) if k % per < 5]
@@ -73,7 +75,7 @@ def main():
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
         version = int(round(-marker))
-        if style == "cell/turgor" and mode != "newer" and version in (3, 4):
+        if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5):
             turgor_to_version2(data, at, version)
         if mode == "older":
             print(f"restart_version.py: {style} payload version {version} -> 2")
