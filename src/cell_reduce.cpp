@@ -34,8 +34,8 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
                        bool fluid_sums) :
     Pointers(lmp),
     command(command_in), group_name(group->names[igroup]), fluidtype(fluid), walltype(wall),
-    irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL), geometry_only(!fluid_sums),
-    wallpair(nullptr), sphpair(nullptr), cells(lmp, command_in, igroup)
+    surfacebit(0), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
+    geometry_only(!fluid_sums), wallpair(nullptr), sphpair(nullptr), cells(lmp, command_in, igroup)
 {
   for (int type : {geometry_only ? wall : fluid, wall})
     if (type < 1 || type > atom->ntypes)
@@ -135,6 +135,7 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
   const tagint *tag = atom->tag;
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
+  const int *mask = atom->mask;
   const int newton_bond = force->newton_bond;
   double **load = wallpair ? wallpair->wall_load() : nullptr;
   double **sphload = sphpair ? sphpair->wall_load() : nullptr;
@@ -201,7 +202,10 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
       s[VOLUME6] += a[0] * (b[1] * cc[2] - b[2] * cc[1]) + a[1] * (b[2] * cc[0] - b[0] * cc[2]) +
           a[2] * (b[0] * cc[1] - b[1] * cc[0]);
       // 2 A = sum |(b - a) x (c - a)|
-      s[AREA2] += cross_norm(ab, ac);
+      const double area2 = cross_norm(ab, ac);
+      s[AREA2] += area2;
+      // exposed area: the triangles with all three corners in the surface group (doc/model.md §5.8)
+      if (surfacebit && (mask[i] & mask[ia] & mask[ic] & surfacebit)) s[SURFAREA2] += area2;
       s[NTRI] += 1.0;
       if (triangles)
         triangles->insert(triangles->end(),

@@ -47,6 +47,7 @@ class CellReduce : protected Pointers {
     LOADX,      // sum of F, x y z
     LOADY,
     LOADZ,
+    SURFAREA2,    // 2 A of the wall triangles whose three corners are in the surface group
     NCOLUMN
   };
 
@@ -63,6 +64,8 @@ class CellReduce : protected Pointers {
 
   // the value of a 'turgor wall|sph' keyword
   void set_turgor(const std::string &value);
+  // the group whose wall triangles (all three corners in it) reduce() sums as SURFAREA2
+  void set_surface(int surface_groupbit) { surfacebit = surface_groupbit; }
   void find_cells() { cells.find_cells(); }
   void init();
   // triangles, if given, receives each counted wall triangle as 10 numbers: cell index, then the
@@ -91,6 +94,7 @@ class CellReduce : protected Pointers {
   double volume(int c) const { return get(c, VOLUME6) / 6.0; }
   double area(int c) const { return 0.5 * get(c, AREA2); }
   double ref_area(int c) const { return 0.5 * get(c, REFAREA2); }
+  double surface_area(int c) const { return 0.5 * get(c, SURFAREA2); }
   double fluid_volume(int c) const { return get(c, FLUIDVOL); }
   double turgor(int c) const { return measure == TURGOR_WALL ? wall_turgor(c) : sph_turgor(c); }
   double sph_turgor(int c) const;
@@ -102,7 +106,7 @@ class CellReduce : protected Pointers {
 
  private:
   std::string command, group_name;
-  int fluidtype, walltype;
+  int fluidtype, walltype, surfacebit;
   int irho, ipressure, ixref;
   int measure;
   bool geometry_only;

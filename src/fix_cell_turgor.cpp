@@ -65,7 +65,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0),
     drive(DRIVE_PSI), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
     air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
-    air_flow(0), area_fraction(1.0), mass_transfer(0.0), ea(0.0), tref(298.15),
+    air_flow(0), area_fraction(1.0), surface_group(-1), mass_transfer(0.0), ea(0.0), tref(298.15),
     solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
     tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
     fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
@@ -129,11 +129,20 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                 air_hm.name.empty() ? air_hm.value : 0.0);
       if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
         flow_transfer(t0, air_speed.value, air_length.value);
-      if (iarg + used + 1 < narg && strcmp(arg[iarg + used], "area") == 0) {
-        area_fraction = utils::numeric(FLERR, arg[iarg + used + 1], false, lmp);
-        if (!(area_fraction > 0.0 && area_fraction <= 1.0))
-          error->all(FLERR, "Fix cell/turgor: air area fraction = {} must be in (0, 1]",
-                     area_fraction);
+      // optional 'area f' and 'surface group-ID', in either order
+      while (iarg + used + 1 < narg) {
+        const char *word = arg[iarg + used], *next = arg[iarg + used + 1];
+        if (strcmp(word, "area") == 0) {
+          area_fraction = utils::numeric(FLERR, next, false, lmp);
+          if (!(area_fraction > 0.0 && area_fraction <= 1.0))
+            error->all(FLERR, "Fix cell/turgor: air area fraction = {} must be in (0, 1]",
+                       area_fraction);
+        } else if (strcmp(word, "surface") == 0) {
+          surface_group = group->find(next);
+          if (surface_group < 0)
+            error->all(FLERR, "Fix cell/turgor: air surface group {} does not exist", next);
+        } else
+          break;
         used += 2;
       }
       drive = DRIVE_AIR;
@@ -295,6 +304,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
+  if (surface_group >= 0) cells->set_surface(group->bitmask[surface_group]);
   if (bondtype) {
     junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
     network = std::make_unique<CellNetwork>();
@@ -593,10 +603,11 @@ void FixCellTurgor::evaluate(bool transfer)
     const double psi_cell = turgor - pi;
     double conductance, rate;
     if (drive == DRIVE_AIR) {
-      // wall and air film in series on the area fraction f (doc/model.md §5.8)
+      // wall and air film in series on the exposed area f A, or f A_surface (doc/model.md §5.8)
+      const double exposed = area_fraction * (surface_group >= 0 ? cells->surface_area(c) : area);
       const auto air = CellWater::air_flux(psi_cell, t, rhow * lpt, hm, rho_sat, rho_air);
-      conductance = area_fraction * area * air.conductance;
-      rate = -area_fraction * area * air.flux;
+      conductance = exposed * air.conductance;
+      rate = -exposed * air.flux;
       s.psi_surface = air.psi_surface;
     } else if (drive == DRIVE_PSI) {
       // dM/dt = rho_w L_P A (psi_ext - psi_cell) (doc/model.md §5.1)

@@ -77,6 +77,7 @@ class FixCellTurgor : public Fix {
   CellQuantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
   int air_flow;
   double area_fraction;      // share of the wall area in contact with the air
+  int surface_group;         // 'surface': air only on the triangles of this group's atoms, or -1
   double mass_transfer;      // h_m of the last evaluation (m/s)
   double ea, tref;           // activation energy of L_P (J/mol), reference temperature (K)
   double solids_fraction;    // wet-basis solids fraction w_s, 0 = none

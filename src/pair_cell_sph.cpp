@@ -776,9 +776,12 @@ void PairCellSPH::split_list()
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const PairConst &p = pc[type[i]][type[j]];
+      // each cell's fluid is bounded by its own wall: no pair with another cell's fluid
+      // (doc/pair_cell_sph.md, Wall boundary)
+      if (molecule[i] != molecule[j]) continue;
       if (!p.boundary)
         fluidj.push_back(j);
-      else if (molecule[i] == molecule[j])
+      else
         boundarypairs.push_back(fluid[type[i]] ? std::array<int, 2>{i, j}
                                                : std::array<int, 2>{j, i});
     }
