@@ -4,7 +4,7 @@
 # examples/tissue) for a periodic block and a slab of 27 and 64 cells on 1 and 2 ranks (2 ranks:
 # without and with fix balance shift), the 2-rank efficiency, the memory per particle from LAMMPS's
 # "Per MPI rank memory" line, and the cost per step of fix cell/turgor's per-cell work (one
-# CellReduce::reduce() with its MPI_Allreduce over all cells, then the transfer) against the number
+# CellReduce::reduce(), its sums sent to the cells' home ranks, then the transfer) against the number
 # of cells (bench/cell_reduce_cost.lmp: tiny lumped cells, no pair forces). Prints the load average
 # with each row and LAMMPS's "% CPU use" (the share of the wall-clock the ranks got): on a shared
 # machine the rate per CPU second (rate / CPU share) estimates the idle-machine rate, but Open MPI's
