@@ -59,18 +59,20 @@ if [[ $parts == *C* ]]; then
   run coarse 1 1.35 300 450
   run fine 1 1.35 2562 3900
 fi
+# variant case: one sealed cell of parts H and U (coarse, seed, fine; the seed at 1.06 and 2.2 x water)
+run_case() {
+  case $2 in
+    coarse) run "$1-coarse" 1 1.35 300 450 ;;
+    seed) run "$1-seed" 1 1.35 1091 1624 ;;
+    fine) run "$1-fine" 1 1.35 2562 3900 ;;
+    seed-1.06) run "$1-seed-1.06" 1 1.06 1091 1624 ;;
+    seed-2.2) run "$1-seed-2.2" 1 2.2 1091 1624 ;;
+  esac
+}
 if [[ $parts == *H* ]]; then
   echo "== H. boundary: fixed h, h mass, h adaptive"
   for hmode in ${HMODES:-fixed mass adaptive}; do
-    for case in ${HCASES:-coarse seed fine seed-1.06 seed-2.2}; do
-      case $case in
-        coarse) run "$hmode-coarse" 1 1.35 300 450 ;;
-        seed) run "$hmode-seed" 1 1.35 1091 1624 ;;
-        fine) run "$hmode-fine" 1 1.35 2562 3900 ;;
-        seed-1.06) run "$hmode-seed-1.06" 1 1.06 1091 1624 ;;
-        seed-2.2) run "$hmode-seed-2.2" 1 2.2 1091 1624 ;;
-      esac
-    done
+    for case in ${HCASES:-coarse seed fine seed-1.06 seed-2.2}; do run_case "$hmode" "$case"; done
   done
   hmode=fixed
 fi
@@ -79,15 +81,7 @@ if [[ $parts == *U* ]]; then
   for v in ${UVARIANTS:-k20:20e6:1.27:fixed:- k5:5e6:1.27:fixed:- hdx1.5:20e6:1.5:fixed:-}; do
     IFS=: read -r vname K hdx hmode popt <<<"$v"
     if [ "$popt" = - ]; then popt="kernel wendland"; else popt=${popt//+/ }; fi
-    for case in ${UCASES:-seed}; do
-      case $case in
-        coarse) run "$vname-coarse" 1 1.35 300 450 ;;
-        seed) run "$vname-seed" 1 1.35 1091 1624 ;;
-        fine) run "$vname-fine" 1 1.35 2562 3900 ;;
-        seed-1.06) run "$vname-seed-1.06" 1 1.06 1091 1624 ;;
-        seed-2.2) run "$vname-seed-2.2" 1 2.2 1091 1624 ;;
-      esac
-    done
+    for case in ${UCASES:-seed}; do run_case "$vname" "$case"; done
   done
   hmode=fixed K=20e6 hdx=1.27 popt="kernel wendland"
 fi
