@@ -34,6 +34,8 @@ class CellRegistry : protected Pointers {
 
   int ncell() const { return (int) ids.size(); }
   tagint id(int c) const { return ids[c]; }
+  // every cell's ID, ascending (index c is cell c)
+  const std::vector<tagint> &cell_ids() const { return ids; }
   // index of a cell ID, -1 if it is not a cell of the group
   int index(tagint molecule) const;
   int home(int c) const { return homes[c]; }

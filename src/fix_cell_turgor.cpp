@@ -741,9 +741,7 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<dou
                              bool transfer, double dtw, double factor, std::vector<double> &dmass)
 {
   const int n = cells->ncell();
-  std::vector<tagint> ids(n);
-  for (int c = 0; c < n; c++) ids[c] = cells->id(c);
-  junctions->gather(ids, !transfer);
+  junctions->gather(cells->registry().cell_ids(), !transfer);
   const double l = lcc.get(lmp);
   if (!(l >= 0.0))
     error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 (step {})",
