@@ -8,11 +8,15 @@
   #: error MESSAGE | NAME=VALUE ... a run with these -var settings must stop with an ERROR line
                                     containing MESSAGE (one line per bad input; a file with error
                                     lines runs only these)
-A normal run passes if LAMMPS exits 0, prints no ERROR and no FAIL line, and prints a PASS line
-(from tests/check.lmp) or the test has compare/same lines. Needs LMP (the lmp to run) in the
-environment; CELLGEN and WRONGPLUGIN become -var cellgen/wrongplugin, MPIEXEC is used when set.
+A normal run passes if LAMMPS exits 0 and prints no ERROR line and no NaN, and the checks of
+tests/check.lmp, which it writes to checks.txt in the run's folder, hold at least one PASS line and
+no FAIL line (or the test has compare/same lines instead). The screen is searched for no verdict:
+the output of a command run by "shell" can interleave with LAMMPS's echo mid-line. Needs LMP (the
+lmp to run) in the environment; CELLGEN and WRONGPLUGIN become -var cellgen/wrongplugin, MPIEXEC
+is used when set. `run.py --selftest` checks the harness itself on five tiny inputs.
 """
 import os
+import pty
 import re
 import shutil
 import subprocess
@@ -42,16 +46,48 @@ def directives(path):
     return spec
 
 
-def run_lammps(inp, workdir, ranks, variables):
+def run_lammps(inp, workdir, ranks, variables, terminal=False):
+    """Run LAMMPS; with terminal=True its output goes to a pseudo-terminal, so that it is
+    line-buffered: since 2024 an error on one rank (error->one) ends LAMMPS in MPI_Abort, which
+    loses whatever a pipe's buffer still holds, the error message included."""
     os.makedirs(workdir, exist_ok=True)
     cmd = [os.environ["LMP"], "-in", inp, "-log", "log.lammps", "-echo", "screen"]
     if int(ranks) > 1:
         cmd = [os.environ.get("MPIEXEC", "mpirun"), "-np", ranks] + cmd
     for name, value in variables:
         cmd += ["-var", name, value]
-    proc = subprocess.run(cmd, cwd=workdir, env=ENV, stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, text=True)
-    return proc.returncode, proc.stdout
+    if not terminal:
+        proc = subprocess.run(cmd, cwd=workdir, env=ENV, stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, text=True)
+        return proc.returncode, proc.stdout
+    master, slave = pty.openpty()
+    proc = subprocess.Popen(cmd, cwd=workdir, env=ENV, stdin=subprocess.DEVNULL, stdout=slave,
+                            stderr=slave)
+    os.close(slave)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(master, 65536)
+        except OSError:    # EIO: the terminal's last writer has gone
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(master)
+    out = b"".join(chunks).decode(errors="replace").replace("\r\n", "\n")
+    return proc.wait(), out
+
+
+def is_nan(token):
+    return token.lower().lstrip("+-") == "nan"
+
+
+def verdicts(path):
+    """The PASS and FAIL lines tests/check.lmp appended to this run's checks.txt."""
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [l.rstrip("\n") for l in f if l.startswith(("PASS", "FAIL"))]
 
 
 def numbers(path):
@@ -84,13 +120,18 @@ def files_agree(a, b, rtol, atol):
     return None
 
 
-def main():
-    inp = os.path.abspath(sys.argv[1])
+def main(inp):
+    inp = os.path.abspath(inp)
     tests = os.path.dirname(os.path.abspath(__file__))
-    name = os.path.splitext(os.path.relpath(inp, tests))[0]
+    name = os.path.splitext(os.path.basename(inp))[0] if SELFTEST else \
+        os.path.splitext(os.path.relpath(inp, tests))[0]
     base = os.path.join(os.environ.get("CELLSPH_TEST_DIR", os.getcwd()), name)
     shutil.rmtree(base, ignore_errors=True)
     spec = directives(inp)
+    with open(inp) as f:
+        quoted = [l.strip() for l in f if re.match(r"\s*variable\s+check\s+string.*'", l)]
+    if quoted:    # check.lmp prints the name inside single quotes: newer LAMMPS stops there
+        return report([f"a check name holds a single quote: {q}" for q in quoted])
     common = [("testdir", tests)] + [(v[0], " ".join(v[1:])) for v in spec["var"]]
     for name in ("cellgen", "wrongplugin"):
         if os.environ.get(name.upper()):
@@ -98,7 +139,8 @@ def main():
     failures = []
 
     for k, (message, assigns) in enumerate(spec["error"]):
-        code, out = run_lammps(inp, os.path.join(base, f"error{k}"), "1", common + assigns)
+        code, out = run_lammps(inp, os.path.join(base, f"error{k}"), "1", common + assigns,
+                               terminal=True)
         errors = [l for l in out.splitlines() if l.startswith("ERROR")]
         if code == 0 or not any(message in l for l in errors):
             failures.append(f"bad input {assigns} should stop with '{message}'; got: {errors or 'no error'}")
@@ -113,12 +155,14 @@ def main():
         code, out = run_lammps(inp, workdir, ranks, common)
         dirs[ranks] = workdir
         lines = out.splitlines()
-        bad = [l for l in lines if l.startswith(("ERROR", "FAIL")) or "nan" in l.split()]
-        print("\n".join(l for l in lines if l.startswith(("PASS", "FAIL", "ERROR"))))
+        checks = verdicts(os.path.join(workdir, "checks.txt"))
+        bad = [l for l in lines if l.startswith("ERROR") or any(is_nan(t) for t in l.split())]
+        bad += [l for l in checks if l.startswith("FAIL")]
+        print("\n".join([l for l in lines if l.startswith("ERROR")] + checks))
         if code != 0 or bad:
             failures.append(f"{ranks} rank(s): exit code {code}; " + "; ".join(bad[:5]))
-        elif not any(l.startswith("PASS") for l in lines) and not (spec["compare"] or spec["same"]):
-            failures.append(f"{ranks} rank(s): no PASS line (the test checked nothing)")
+        elif not any(l.startswith("PASS") for l in checks) and not (spec["compare"] or spec["same"]):
+            failures.append(f"{ranks} rank(s): no PASS line in checks.txt (the test checked nothing)")
         for fa, fb, rtol, atol in spec["same"]:
             msg = files_agree(os.path.join(workdir, fa), os.path.join(workdir, fb),
                               float(rtol), float(atol))
@@ -140,5 +184,46 @@ def report(failures):
     return 1 if failures else 0
 
 
+# --selftest: the harness itself on five tiny inputs. A verdict printed on the screen only (as a
+# "shell" command's output could) decides nothing; a failed check, a missing check and a NaN fail.
+SELFTEST = False
+CASES = {
+    "screen_fail_line_is_ignored": (0, 'print "FAIL decoy on the screen"\n'
+                                       'variable check string "one is one"\n'
+                                       'variable value equal 1\nvariable limit equal 1\n'),
+    "failed_check_fails": (1, 'variable check string "two is not one"\n'
+                              'variable value equal 2\nvariable limit equal 1\n'),
+    "failed_check_after_a_passed_one_fails": (1, 'variable check string "one is one"\n'
+                                                 'variable value equal 1\nvariable limit equal 1\n'
+                                                 'include CHECK\n'
+                                                 'variable check string "two is not one"\n'
+                                                 'variable value equal 2\n'),
+    "no_check_fails": (1, 'print "PASS decoy on the screen"\n'),
+    "nan_fails": (1, 'variable x equal 1e308*10-1e308*10\nprint "x = $x"\n'
+                     'variable check string "one is one"\n'
+                     'variable value equal 1\nvariable limit equal 1\n'),
+}
+
+
+def selftest():
+    import tempfile
+    global SELFTEST
+    SELFTEST = True
+    tests = os.path.dirname(os.path.abspath(__file__))
+    wrong = []
+    with tempfile.TemporaryDirectory() as tmp:
+        os.environ["CELLSPH_TEST_DIR"] = tmp
+        for name, (want, body) in CASES.items():
+            inp = os.path.join(tmp, name + ".in")
+            check = f"include {tests}/check.lmp\n"
+            with open(inp, "w") as f:
+                f.write(body.replace("include CHECK\n", check) + (check if "check string" in body else ""))
+            got = main(inp)
+            print(f"{'PASS' if got == want else 'FAIL'} selftest {name}: exit {got}, expected {want}")
+            if got != want:
+                wrong.append(name)
+    return 1 if wrong else 0
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(selftest() if sys.argv[1:] == ["--selftest"] else main(sys.argv[1]))
