@@ -50,6 +50,7 @@ def main(folder):
     time_of = {int(r[6]): r[0] for r in slab}
     xslab_of = {int(r[6]): r[1] for r in slab}
     thick_of = {int(r[6]): r[2] for r in slab}
+    broken_of = {int(r[6]): int(r[4]) for r in slab}
     steps = [s for s in steps if s in time_of]
     box, fresh = dump("fresh.dump")
     area = (box[0][1] - box[0][0]) * (box[1][1] - box[1][0])
@@ -72,13 +73,14 @@ def main(folder):
 
     say(f"{n} cells in {nlayer} depth layers; box {area ** 0.5 * 1e6:.0f} um square; "
         f"slab {thick_of[s0] * 1e6:.0f} um thick at the start of drying")
-    say("\n# drying curve: step, t (s), slab X/X0, thickness (um), space outside the cells")
+    say("\n# drying curve: step, t (s), slab X/X0, thickness (um), space outside the cells, "
+        "broken junctions")
     with open("curve.dat", "w") as f:
         f.write("# t[s] X/X0 thickness[m] space_outside_cells\n")
         for s in steps:
             phi = 1 - sum(r[1] for r in cells[s]) / (area * thick_of[s])
             f.write(f"{time_of[s]:.6e} {xslab_of[s]:.6f} {thick_of[s]:.6e} {phi:.6f}\n")
-            say(f"{s} {time_of[s]:.2f} {xslab_of[s]:.4f} {thick_of[s] * 1e6:.1f} {phi:.4f}")
+            say(f"{s} {time_of[s]:.2f} {xslab_of[s]:.4f} {thick_of[s] * 1e6:.1f} {phi:.4f} {broken_of[s]}")
     # moisture profile at up to five times: each cell (points) and the layer means (lines)
     pick = [steps[round(k * (len(steps) - 1) / 4)] for k in range(5)] if len(steps) >= 5 else steps
     say("\n# moisture profile: layer mean X/X0 (layer 1 at the top) at t (s)")
