@@ -7,8 +7,10 @@
   shrinkage.png      cell volume V/V0 and section area A/A0 against the cell's X/X0, by depth layer
   porosity.png       the slab's space outside the cells against its X/X0
   summary.txt        the numbers behind them (per layer, per output time)
-and the data files plotted (gnuplot): curve.dat, profile_K.dat, shrink_L.dat. The cut pictures
-(cut_fresh.png, cut_half.png, cut_dry.png) are written by in.tissue itself (write_dump image).
+  cut_fresh.png, cut_half.png, cut_dry.png
+                     the slab cut through its middle: the atoms within one spacing of the plane
+                     y = middle (walls green, sap blue) in fresh.dump, half.dump and dry.dump
+and the data files plotted (gnuplot): curve.dat, profile_K.dat, shrink_L.dat, cut_NAME.dat.
 
   python3 analyse.py FOLDER
 """
@@ -50,6 +52,7 @@ def main(folder):
     time_of = {int(r[6]): r[0] for r in slab}
     xslab_of = {int(r[6]): r[1] for r in slab}
     thick_of = {int(r[6]): r[2] for r in slab}
+    broken_of = {int(r[6]): int(r[4]) for r in slab}
     steps = [s for s in steps if s in time_of]
     box, fresh = dump("fresh.dump")
     area = (box[0][1] - box[0][0]) * (box[1][1] - box[1][0])
@@ -72,13 +75,14 @@ def main(folder):
 
     say(f"{n} cells in {nlayer} depth layers; box {area ** 0.5 * 1e6:.0f} um square; "
         f"slab {thick_of[s0] * 1e6:.0f} um thick at the start of drying")
-    say("\n# drying curve: step, t (s), slab X/X0, thickness (um), space outside the cells")
+    say("\n# drying curve: step, t (s), slab X/X0, thickness (um), space outside the cells, "
+        "broken junctions")
     with open("curve.dat", "w") as f:
         f.write("# t[s] X/X0 thickness[m] space_outside_cells\n")
         for s in steps:
             phi = 1 - sum(r[1] for r in cells[s]) / (area * thick_of[s])
             f.write(f"{time_of[s]:.6e} {xslab_of[s]:.6f} {thick_of[s]:.6e} {phi:.6f}\n")
-            say(f"{s} {time_of[s]:.2f} {xslab_of[s]:.4f} {thick_of[s] * 1e6:.1f} {phi:.4f}")
+            say(f"{s} {time_of[s]:.2f} {xslab_of[s]:.4f} {thick_of[s] * 1e6:.1f} {phi:.4f} {broken_of[s]}")
     # moisture profile at up to five times: each cell (points) and the layer means (lines)
     pick = [steps[round(k * (len(steps) - 1) / 4)] for k in range(5)] if len(steps) >= 5 else steps
     say("\n# moisture profile: layer mean X/X0 (layer 1 at the top) at t (s)")
@@ -147,6 +151,40 @@ plot {layers_v}, x with lines dt 2 lc black title 'V/V0 = X/X0'
 set ylabel 'section area A/A0'
 plot {layers_a}, x**(2./3) with lines dt 2 lc black title '(X/X0)^(2/3)'
 unset multiplot
+"""
+    # cut pictures from the dumps: x and depth of the atoms within one spacing of y = middle
+    width = box[0][1] - box[0][0]
+    spacing = 24e-6
+    ymid = 0.5 * (box[1][0] + box[1][1])
+    for name in ("fresh", "half", "dry"):
+        if not os.path.exists(f"{name}.dump"):
+            continue
+        atoms = dump(f"{name}.dump")[1]
+        with open(f"cut_{name}.dat", "w") as f:
+            for t in (2, 1):
+                f.write(f"# type {t}: x[um] depth below the fresh top[um]\n")
+                for a in atoms:
+                    if a[1] == t and abs(a[3] - ymid) < spacing:
+                        f.write(f"{(a[2] - box[0][0]) * 1e6:.2f} {(ztop - a[4]) * 1e6:.2f}\n")
+                f.write("\n\n")
+        step = int(open(f"{name}.dump").readlines()[1])
+        if step in time_of:
+            state = f"t = {time_of[step]:.0f} s, slab X/X0 = {xslab_of[step]:.3f}"
+        elif name == "dry" and os.path.exists("final.txt"):
+            f = [float(v) for v in open("final.txt").read().split()]
+            state = f"t = {f[0]:.0f} s, slab X/X0 = {f[1]:.3f}"
+        else:
+            state = "t = 0, X/X0 = 1"
+        tag = {"fresh": "fresh", "half": "half dry", "dry": "dry"}[name] + f", {state}"
+        script += f"""set terminal pngcairo size 1000,{int(300 + 1000 * thick_of[s0] / width)} noenhanced font ",11"
+set output 'cut_{name}.png'
+set size ratio -1
+set xrange [0:{width * 1e6:.0f}]; set yrange [{thick_of[s0] * 1e6 + 30:.0f}:-30]
+set xlabel 'x (um)'; set ylabel 'depth below the fresh top face (um)'
+set title 'Cut through y = middle, {tag} (walls green, sap blue)'
+set key off
+plot 'cut_{name}.dat' index 0 with points pt 7 ps 0.8 lc rgb 'forest-green', '' index 1 with points pt 7 ps 0.9 lc rgb 'royalblue'
+set size noratio
 """
     open("plots.gp", "w").write(script)
     subprocess.run(["gnuplot", "plots.gp"], check=True)
