@@ -212,6 +212,47 @@ void CellRegistry::scatter(int ncol, const std::vector<double> &values,
 }
 
 /* ----------------------------------------------------------------------
+   variable rows to the home ranks of their cells (wall triangles, fluid positions)
+------------------------------------------------------------------------- */
+
+void CellRegistry::send_home(int ncol, const std::vector<double> &rows, std::vector<double> &got,
+                             int ntag, const std::vector<tagint> *tags,
+                             std::vector<tagint> *got_tags) const
+{
+  const int nprocs = comm->nprocs;
+  const int n = (int) (rows.size() / ncol);
+  std::vector<int> scounts(nprocs, 0), sdispls(nprocs, 0), rcounts(nprocs), rdispls(nprocs, 0);
+  for (int r = 0; r < n; r++) scounts[homes[(int) rows[(size_t) ncol * r]]]++;
+  for (int p = 1; p < nprocs; p++) sdispls[p] = sdispls[p - 1] + scounts[p - 1];
+  MPI_Alltoall(scounts.data(), 1, MPI_INT, rcounts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) rdispls[p] = rdispls[p - 1] + rcounts[p - 1];
+  const int nrecv = rdispls.back() + rcounts.back();
+
+  // the rows in the order of their home ranks
+  std::vector<int> order(n), next(sdispls);
+  for (int r = 0; r < n; r++) order[next[homes[(int) rows[(size_t) ncol * r]]]++] = r;
+  std::vector<double> send((size_t) ncol * n);
+  for (int k = 0; k < n; k++)
+    std::copy_n(&rows[(size_t) ncol * order[k]], ncol, &send[(size_t) ncol * k]);
+  got.resize((size_t) ncol * nrecv);
+  alltoallv(ncol, scounts, sdispls, rcounts, rdispls, send.data(), got.data());
+  if (!tags) return;
+
+  std::vector<tagint> sendtags((size_t) ntag * n);
+  for (int k = 0; k < n; k++)
+    std::copy_n(&(*tags)[(size_t) ntag * order[k]], ntag, &sendtags[(size_t) ntag * k]);
+  for (int p = 0; p < nprocs; p++) {
+    scounts[p] *= ntag;
+    sdispls[p] *= ntag;
+    rcounts[p] *= ntag;
+    rdispls[p] *= ntag;
+  }
+  got_tags->resize((size_t) ntag * nrecv);
+  MPI_Alltoallv(sendtags.data(), scounts.data(), sdispls.data(), MPI_LMP_TAGINT, got_tags->data(),
+                rcounts.data(), rdispls.data(), MPI_LMP_TAGINT, world);
+}
+
+/* ----------------------------------------------------------------------
    every rank's home values on every rank (root < 0) or on root only, in cell order
 ------------------------------------------------------------------------- */
 
