@@ -270,27 +270,29 @@ void CellReduce::home_triangles(const std::vector<double> &mine,
   cells.send_home(10, mine, got, 3, &mycorners, &gotids);
   const int ntri = (int) got.size() / 10;
 
-  // home slot of each received triangle; order by slot, then middle, first, last corner ID
+  // grouped by home slot (counting sort), each cell's ordered by middle, first, last corner ID
+  home.first.assign(cells.home_cells().size() + 1, 0);
   std::vector<int> slot(ntri), order(ntri);
   for (int t = 0; t < ntri; t++) {
     slot[t] = cells.home_slot((int) got[10 * (size_t) t]);
     if (slot[t] < 0)
       error->one(FLERR, "{}: rank {} got a wall triangle of another rank's cell", command,
                  comm->me);
+    home.first[slot[t] + 1]++;
   }
-  std::iota(order.begin(), order.end(), 0);
+  std::partial_sum(home.first.begin(), home.first.end(), home.first.begin());
+  std::vector<int> next(home.first.begin(), home.first.end() - 1);
+  for (int t = 0; t < ntri; t++) order[next[slot[t]]++] = t;
   const tagint *g = gotids.data();
-  std::sort(order.begin(), order.end(), [&](int u, int w) {
-    if (slot[u] != slot[w]) return slot[u] < slot[w];
+  const auto by_corners = [g](int u, int w) {
     const tagint *p = g + 3 * (size_t) u, *q = g + 3 * (size_t) w;
     if (p[1] != q[1]) return p[1] < q[1];
     if (p[0] != q[0]) return p[0] < q[0];
     return p[2] < q[2];
-  });
+  };
+  for (int h = 0; h + 1 < (int) home.first.size(); h++)
+    std::sort(order.begin() + home.first[h], order.begin() + home.first[h + 1], by_corners);
 
-  home.first.assign(cells.home_cells().size() + 1, 0);
-  for (int t = 0; t < ntri; t++) home.first[slot[t] + 1]++;
-  std::partial_sum(home.first.begin(), home.first.end(), home.first.begin());
   home.coords.resize(9 * (size_t) ntri);
   home.tags.resize(3 * (size_t) ntri);
   for (int s = 0; s < ntri; s++) {
