@@ -258,48 +258,63 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
 }
 
 /* ----------------------------------------------------------------------
-   the triangles of reduce() (10 numbers each: cell index, corners) from every rank on every rank
-   (MPI_Allgatherv), grouped by cell in rank order, with their corner IDs if mycorners is given
+   the triangles of reduce() (10 numbers each: cell index, corners; 3 corner IDs) to the home ranks
+   (CellRegistry::send_home), grouped by home cell and ordered by corner IDs there
 ------------------------------------------------------------------------- */
 
-void CellReduce::gather_triangles(const std::vector<double> &mine, CellTriangles &all,
-                                  const std::vector<tagint> *mycorners) const
+void CellReduce::home_triangles(const std::vector<double> &mine,
+                                const std::vector<tagint> &mycorners, CellTriangles &home) const
 {
-  const int nprocs = comm->nprocs;
-  const int nmine = (int) mine.size();
-  all.counts.resize(nprocs);
-  all.displs.assign(nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, all.counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) all.displs[p] = all.displs[p - 1] + all.counts[p - 1];
-  all.gathered.resize(all.displs.back() + all.counts.back());
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.gathered.data(), all.counts.data(),
-                 all.displs.data(), MPI_DOUBLE, world);
-  const int ntri = (int) all.gathered.size() / 10;
-  if (mycorners) {
-    // 3 IDs per triangle where the coordinates have 10 numbers
-    for (int p = 0; p < nprocs; p++) {
-      all.counts[p] = all.counts[p] / 10 * 3;
-      all.displs[p] = all.displs[p] / 10 * 3;
-    }
-    all.gathered_tags.resize(3 * (size_t) ntri);
-    MPI_Allgatherv(mycorners->data(), (int) mycorners->size(), MPI_LMP_TAGINT,
-                   all.gathered_tags.data(), all.counts.data(), all.displs.data(), MPI_LMP_TAGINT,
-                   world);
-  }
+  std::vector<double> got;
+  std::vector<tagint> gotids;
+  cells.send_home(10, mine, got, 3, &mycorners, &gotids);
+  const int ntri = (int) got.size() / 10;
 
-  // triangles grouped by cell: those of cell c are first[c] to first[c + 1] - 1
-  const double *g = all.gathered.data();
-  all.first.assign(ncell() + 1, 0);
-  for (int t = 0; t < ntri; t++) all.first[(int) g[10 * t] + 1]++;
-  std::partial_sum(all.first.begin(), all.first.end(), all.first.begin());
-  std::vector<int> slot(all.first.begin(), all.first.end() - 1);
-  all.coords.resize(9 * (size_t) ntri);
-  all.tags.resize(mycorners ? 3 * (size_t) ntri : 0);
+  // grouped by home slot (counting sort), each cell's ordered by middle, first, last corner ID
+  home.first.assign(cells.home_cells().size() + 1, 0);
+  std::vector<int> slot(ntri), order(ntri);
   for (int t = 0; t < ntri; t++) {
-    const int s = slot[(int) g[10 * t]]++;
-    std::copy_n(&g[10 * t + 1], 9, &all.coords[9 * (size_t) s]);
-    if (mycorners) std::copy_n(&all.gathered_tags[3 * (size_t) t], 3, &all.tags[3 * (size_t) s]);
+    slot[t] = cells.home_slot((int) got[10 * (size_t) t]);
+    if (slot[t] < 0)
+      error->one(FLERR, "{}: rank {} got a wall triangle of another rank's cell", command,
+                 comm->me);
+    home.first[slot[t] + 1]++;
   }
+  std::partial_sum(home.first.begin(), home.first.end(), home.first.begin());
+  std::vector<int> next(home.first.begin(), home.first.end() - 1);
+  for (int t = 0; t < ntri; t++) order[next[slot[t]]++] = t;
+  const tagint *g = gotids.data();
+  const auto by_corners = [g](int u, int w) {
+    const tagint *p = g + 3 * (size_t) u, *q = g + 3 * (size_t) w;
+    if (p[1] != q[1]) return p[1] < q[1];
+    if (p[0] != q[0]) return p[0] < q[0];
+    return p[2] < q[2];
+  };
+  for (int h = 0; h + 1 < (int) home.first.size(); h++)
+    std::sort(order.begin() + home.first[h], order.begin() + home.first[h + 1], by_corners);
+
+  home.coords.resize(9 * (size_t) ntri);
+  home.tags.resize(3 * (size_t) ntri);
+  for (int s = 0; s < ntri; s++) {
+    const int t = order[s];
+    std::copy_n(&got[10 * (size_t) t + 1], 9, &home.coords[9 * (size_t) s]);
+    std::copy_n(&gotids[3 * (size_t) t], 3, &home.tags[3 * (size_t) s]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellReduce::held_triangles(const std::vector<double> &mine, const CellTriangles &home,
+                                double held[3]) const
+{
+  const double own = (double) (mine.size() / 10);
+  const double here = own + home.size();
+  const double sums[2] = {here, own};
+  double total[2];
+  MPI_Allreduce(&here, &held[0], 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(sums, total, 2, MPI_DOUBLE, MPI_SUM, world);
+  held[1] = total[0];
+  held[2] = total[1];
 }
 
 /* ----------------------------------------------------------------------

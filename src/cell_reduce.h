@@ -73,9 +73,15 @@ class CellReduce : protected Pointers {
   // if given, their atom IDs (3 per triangle)
   void reduce(const double *bond_gt0 = nullptr, std::vector<double> *triangles = nullptr,
               std::vector<tagint> *corners = nullptr);
-  // every rank's triangles (and corner IDs) of reduce(), gathered on all ranks, grouped by cell
-  void gather_triangles(const std::vector<double> &mine, class CellTriangles &all,
-                        const std::vector<tagint> *mycorners = nullptr) const;
+  // the triangles and corner IDs of reduce() from every rank to the home rank of their cell: home
+  // holds those of this rank's home cells only, each cell's in the order of their corner IDs
+  // (middle, first, last), the same on any number of ranks. Collective, O(triangles sent)
+  void home_triangles(const std::vector<double> &mine, const std::vector<tagint> &mycorners,
+                      class CellTriangles &home) const;
+  // wall triangles held for an evaluation (those of reduce() plus those at home): the most on one
+  // rank, the sum over ranks, and the wall triangles counted once. Collective (two MPI_Allreduce)
+  void held_triangles(const std::vector<double> &mine, const class CellTriangles &home,
+                      double held[3]) const;
 
   // the cells, their home ranks, the exchange of per-cell values
   CellRegistry &registry() { return cells; }
@@ -119,20 +125,21 @@ class CellReduce : protected Pointers {
   int custom_vector(const char *name) const;
 };
 
-// each cell's wall triangles on every rank (CellReduce::gather_triangles): cell c has ntri(c)
-// triangles, 9 coordinates each (corners a b c relative to the cell's reference point, outward)
-// from xyz(c), and with corner IDs their 3 atom IDs each from ids(c)
+// the wall triangles of this rank's home cells (CellReduce::home_triangles): home cell h (slot in
+// home_cells()) has ntri(h) triangles, 9 coordinates each (corners a b c relative to the cell's
+// reference point, outward) from xyz(h), and their 3 corner atom IDs each from ids(h)
 class CellTriangles {
  public:
-  int ntri(int c) const { return first[c + 1] - first[c]; }
-  const double *xyz(int c) const { return &coords[9 * (size_t) first[c]]; }
-  const tagint *ids(int c) const { return &tags[3 * (size_t) first[c]]; }
+  int ntri(int h) const { return first[h + 1] - first[h]; }
+  const double *xyz(int h) const { return &coords[9 * (size_t) first[h]]; }
+  const tagint *ids(int h) const { return &tags[3 * (size_t) first[h]]; }
+  int size() const { return (int) tags.size() / 3; }
 
  private:
   friend class CellReduce;
-  std::vector<double> coords, gathered;
-  std::vector<tagint> tags, gathered_tags;
-  std::vector<int> first, counts, displs;
+  std::vector<double> coords;
+  std::vector<tagint> tags;
+  std::vector<int> first;
 };
 
 }    // namespace LAMMPS_NS

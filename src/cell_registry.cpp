@@ -212,6 +212,60 @@ void CellRegistry::scatter(int ncol, const std::vector<double> &values,
 }
 
 /* ----------------------------------------------------------------------
+   variable rows to the home ranks of their cells (wall triangles, fluid positions)
+------------------------------------------------------------------------- */
+
+void CellRegistry::send_home(int ncol, const std::vector<double> &rows, std::vector<double> &got,
+                             int ntag, const std::vector<tagint> *tags,
+                             std::vector<tagint> *got_tags) const
+{
+  const int nprocs = comm->nprocs, me = comm->me;
+  const int n = (int) (rows.size() / ncol);
+  std::vector<int> scounts(nprocs, 0), sdispls(nprocs, 0), rcounts(nprocs), rdispls(nprocs, 0);
+  for (int r = 0; r < n; r++) scounts[homes[(int) rows[(size_t) ncol * r]]]++;
+  MPI_Alltoall(scounts.data(), 1, MPI_INT, rcounts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) rdispls[p] = rdispls[p - 1] + rcounts[p - 1];
+  const int nrecv = rdispls.back() + rcounts.back();
+  // this rank's own home rows go straight into got (at rdispls[me]), not through MPI
+  scounts[me] = rcounts[me] = 0;
+  for (int p = 1; p < nprocs; p++) sdispls[p] = sdispls[p - 1] + scounts[p - 1];
+  const int nsend = sdispls.back() + scounts.back();
+
+  // the other rows in the order of their home ranks; order[k]: the row of send row k, then the
+  // rows kept here
+  std::vector<int> order(n), next(sdispls);
+  std::vector<double> send((size_t) ncol * nsend);
+  got.resize((size_t) ncol * nrecv);
+  int kept = nsend;
+  for (int r = 0; r < n; r++) {
+    const int p = homes[(int) rows[(size_t) ncol * r]];
+    const int k = p == me ? kept++ : next[p]++;
+    order[k] = r;
+    double *to =
+        p == me ? &got[(size_t) ncol * (rdispls[me] + k - nsend)] : &send[(size_t) ncol * k];
+    std::copy_n(&rows[(size_t) ncol * r], ncol, to);
+  }
+  alltoallv(ncol, scounts, sdispls, rcounts, rdispls, send.data(), got.data());
+  if (!tags) return;
+
+  std::vector<tagint> sendtags((size_t) ntag * nsend);
+  got_tags->resize((size_t) ntag * nrecv);
+  for (int k = 0; k < n; k++) {
+    tagint *to = k < nsend ? &sendtags[(size_t) ntag * k]
+                           : &(*got_tags)[(size_t) ntag * (rdispls[me] + k - nsend)];
+    std::copy_n(&(*tags)[(size_t) ntag * order[k]], ntag, to);
+  }
+  for (int p = 0; p < nprocs; p++) {
+    scounts[p] *= ntag;
+    sdispls[p] *= ntag;
+    rcounts[p] *= ntag;
+    rdispls[p] *= ntag;
+  }
+  MPI_Alltoallv(sendtags.data(), scounts.data(), sdispls.data(), MPI_LMP_TAGINT, got_tags->data(),
+                rcounts.data(), rdispls.data(), MPI_LMP_TAGINT, world);
+}
+
+/* ----------------------------------------------------------------------
    every rank's home values on every rank (root < 0) or on root only, in cell order
 ------------------------------------------------------------------------- */
 

@@ -63,6 +63,13 @@ class CellRegistry : protected Pointers {
   // values: ncol per home cell; out on rank 0 only, ncol per cell in cell order (restart files)
   void gather(int ncol, const std::vector<double> &values, std::vector<double> &out) const;
 
+  // rows of ncol doubles, each led by its cell index (and ntag IDs per row in tags), to the home
+  // rank of that cell; got (and got_tags) receive the rows of this rank's home cells from every
+  // rank, in rank order. Collective (MPI_Alltoall of counts, MPI_Alltoallv of rows), O(rows)
+  void send_home(int ncol, const std::vector<double> &rows, std::vector<double> &got, int ntag = 0,
+                 const std::vector<tagint> *tags = nullptr,
+                 std::vector<tagint> *got_tags = nullptr) const;
+
   // per-cell problems found on the home ranks: the message of the lowest failed cell index
   // (failed = ncell() if none) stops every rank with error->all; each rank's warnings are printed
   // by rank 0. Collective, one MPI_Allreduce of 2 ints when nothing happened

@@ -3,7 +3,8 @@
    compute cell/props: per-cell state from the shared per-cell sums (cell_reduce.h), one row per
    cell in ascending cell ID, usable as c_ID[i][j] in thermo and by fix ave/time mode vector. Each
    row is made on the cell's home rank (where fix cell/turgor keeps the cell's water), then every
-   rank gathers all rows.
+   rank gathers all rows. The leak count runs there too: the cell's wall triangles and the
+   positions of its fluid atoms owned elsewhere go to the home rank only.
 ------------------------------------------------------------------------- */
 
 #include "compute_cell_props.h"
@@ -55,7 +56,7 @@ static double winding_number(const double *tri, int ntri, const double *p)
 /* ---------------------------------------------------------------------- */
 
 ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), homes_checked(false)
+    Compute(lmp, narg, arg), held{}, homes_checked(false)
 {
   int walltype = 2;
   fluidtype = 1;
@@ -83,6 +84,11 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
   size_array_cols = NCOLUMN;
   extarray = 0;
   memory->create(array, size_array_rows, size_array_cols, "cell/props:array");
+  // the wall triangles held at the last evaluation (doc/compute_cell_props.md)
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  vector = held;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -115,7 +121,7 @@ void ComputeCellProps::init()
 void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
-  cells->reduce(nullptr, &mine);
+  cells->reduce(nullptr, &mine, &corners);
   count_outside();
   if (!homes_checked) check_homes();
 
@@ -170,6 +176,15 @@ void ComputeCellProps::compute_array()
   std::copy(all.begin(), all.end(), &array[0][0]);
 }
 
+/* ---------------------------------------------------------------------- */
+
+void ComputeCellProps::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  if (invoked_array != update->ntimestep) compute_array();
+  cells->held_triangles(mine, *walls, held);
+}
+
 /* ----------------------------------------------------------------------
    a cell's row is made where the fixes cell/turgor keep its water: they must give it the same
    home rank (once per run, after the fixes' init)
@@ -197,25 +212,27 @@ void ComputeCellProps::check_homes()
 }
 
 /* ----------------------------------------------------------------------
-   the number of each cell's fluid atoms outside its wall: winding number < 1/2 about the atom
-   (unwrapped as the wall triangles) of the cell's triangles, gathered from all ranks, totalled on
-   the cell's home rank. Exact
-   shortcuts: outside the ball around the corners' centroid o that holds every corner the winding
-   number is 0; inside the ball around o that touches no triangle plane it is that of o.
+   the number of each home cell's fluid atoms outside its wall: winding number < 1/2 about the atom
+   (unwrapped as the wall triangles) of the cell's triangles, on the cell's home rank. The
+   triangles go there (home_triangles) and so do the positions of the cell's fluid atoms owned by
+   other ranks: 4 numbers per such atom against 10 per triangle to every rank touching the cell.
+   Exact shortcuts: outside the ball around the corners' centroid o that holds every corner the
+   winding number is 0; inside the ball around o that touches no triangle plane it is that of o.
 ------------------------------------------------------------------------- */
 
 void ComputeCellProps::count_outside()
 {
-  const int n = size_array_rows;
-  cells->gather_triangles(mine, *walls);
+  cells->home_triangles(mine, corners, *walls);
+  const CellRegistry &registry = cells->registry();
+  const int nhome = (int) cells->home_cells().size();
 
-  // per cell: o, squared radius of the ball holding every corner, of the ball touching no
+  // per home cell: o, squared radius of the ball holding every corner, of the ball touching no
   // triangle plane, winding number at o
-  centre.assign(6 * n, 0.0);
-  for (int c = 0; c < n; c++) {
-    double *o = &centre[6 * c];
-    const double *ct = walls->xyz(c);
-    const int nt = walls->ntri(c);
+  centre.assign(6 * (size_t) nhome, 0.0);
+  for (int h = 0; h < nhome; h++) {
+    double *o = &centre[6 * h];
+    const double *ct = walls->xyz(h);
+    const int nt = walls->ntri(h);
     for (int k = 0; k < 9 * nt; k++) o[k % 3] += ct[k] / (3.0 * nt);
     double rout2 = 0.0, rin2 = INFINITY;
     for (int t = 0; t < nt; t++) {
@@ -230,33 +247,55 @@ void ComputeCellProps::count_outside()
                    nz = u[0] * w[1] - u[1] * w[0];
       const double nn = nx * nx + ny * ny + nz * nz;
       // squared distance of o from the triangle's plane: (n . (a - o))^2 / |n|^2
-      const double h = nx * (a[0] - o[0]) + ny * (a[1] - o[1]) + nz * (a[2] - o[2]);
-      if (nn > 0.0) rin2 = std::min(rin2, h * h / nn);
+      const double h2 = nx * (a[0] - o[0]) + ny * (a[1] - o[1]) + nz * (a[2] - o[2]);
+      if (nn > 0.0) rin2 = std::min(rin2, h2 * h2 / nn);
     }
     o[3] = rout2;
     o[4] = rin2;
     o[5] = nt > 0 ? winding_number(ct, nt, o) : 0.0;
   }
 
-  const CellRegistry &registry = cells->registry();
-  std::vector<double> count(registry.touched().size(), 0.0);
+  // fluid atoms of home cells are tested here, the others' positions (relative to the cell's
+  // reference point, unwrapped) go to their cell's home
+  outside.assign(nhome, 0.0);
+  away.clear();
   const std::vector<int> &cellof = cells->cell_of_atom();
   double xu[3];
   for (int i = 0; i < atom->nlocal; i++) {
     const int c = cellof[i];
     if (c < 0 || atom->type[i] != fluidtype) continue;
-    const double *o = &centre[6 * c];
     const double *ref = cells->reference(c);
     domain->unmap(atom->x[i], atom->image[i], xu);
     for (int d = 0; d < 3; d++) xu[d] -= ref[d];
-    const double dx = xu[0] - o[0], dy = xu[1] - o[1], dz = xu[2] - o[2];
-    const double r2 = dx * dx + dy * dy + dz * dz;
-    double w = 0.0;
-    if (r2 < o[4])
-      w = o[5];
-    else if (r2 <= o[3])
-      w = winding_number(walls->xyz(c), walls->ntri(c), xu);
-    if (w < 0.5) count[registry.slot(c)] += 1.0;
+    const int h = registry.home_slot(c);
+    if (h >= 0)
+      outside[h] += is_outside(h, xu) ? 1.0 : 0.0;
+    else
+      away.insert(away.end(), {(double) c, xu[0], xu[1], xu[2]});
   }
-  cells->registry().reduce(1, count, outside);
+  registry.send_home(4, away, got);
+  for (size_t r = 0; r < got.size(); r += 4) {
+    const int h = registry.home_slot((int) got[r]);
+    if (h < 0)
+      error->one(FLERR, "Compute cell/props: rank {} got a fluid atom of another rank's cell",
+                 comm->me);
+    outside[h] += is_outside(h, &got[r + 1]) ? 1.0 : 0.0;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   is x (relative to the reference point of home cell h) outside the cell's wall
+------------------------------------------------------------------------- */
+
+bool ComputeCellProps::is_outside(int h, const double *x) const
+{
+  const double *o = &centre[6 * h];
+  const double dx = x[0] - o[0], dy = x[1] - o[1], dz = x[2] - o[2];
+  const double r2 = dx * dx + dy * dy + dz * dz;
+  double w = 0.0;
+  if (r2 < o[4])
+    w = o[5];
+  else if (r2 <= o[3])
+    w = winding_number(walls->xyz(h), walls->ntri(h), x);
+  return w < 0.5;
 }

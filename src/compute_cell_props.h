@@ -23,6 +23,7 @@ class ComputeCellProps : public Compute {
   ~ComputeCellProps() override;
   void init() override;
   void compute_array() override;
+  void compute_vector() override;
 
   // columns of the global array
   enum {
@@ -53,16 +54,20 @@ class ComputeCellProps : public Compute {
 
  private:
   std::unique_ptr<CellReduce> cells;
-  std::unique_ptr<CellTriangles> walls;    // every cell's wall triangles, on every rank
+  std::unique_ptr<CellTriangles> walls;    // the wall triangles of this rank's home cells
   std::vector<FixCellTurgor *> turgor;
   int fluidtype;
-  std::vector<double> mine, centre;     // this rank's wall triangles, per-cell ball tests
+  std::vector<double> mine, centre;     // this rank's wall triangles, per home cell ball tests
+  std::vector<tagint> corners;          // the corner IDs of mine
+  std::vector<double> away, got;        // fluid positions sent to, received from the homes
   std::vector<double> outside, rows;    // per home cell: fluid atoms outside, rows of the array
   std::vector<double> all;              // every cell's row
+  double held[3];                       // the vector: wall triangles held
 
   bool homes_checked;    // the fixes cell/turgor give each cell the same home rank
 
   void count_outside();
+  bool is_outside(int h, const double *x) const;
   void check_homes();
 };
 

@@ -2,8 +2,9 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    compute cell/shape: per cell, the section through its centre by a plane and that section's
    shape descriptors as image analysis (ImageJ) defines them, and the wall's wrinkling, wall area
-   over the area of its convex hull. Every cell's wall triangles are gathered on every rank
-   (cell_reduce.h); each rank measures every nprocs-th cell, one MPI_Allreduce shares the rows.
+   over the area of its convex hull. Each cell's wall triangles go to its home rank only
+   (CellReduce::home_triangles), which measures the cell; every rank then gathers the rows
+   (CellRegistry::allgather, O(cells)).
 ------------------------------------------------------------------------- */
 
 #include "compute_cell_shape.h"
@@ -11,7 +12,6 @@
 #include "cell_hull.h"
 #include "cell_reduce.h"
 #include "cell_section.h"
-#include "comm.h"
 #include "error.h"
 #include "math_const.h"
 #include "memory.h"
@@ -32,7 +32,7 @@ static constexpr double DEGENERATE = 1e-9;
 /* ---------------------------------------------------------------------- */
 
 ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), plane(PLANE_Z), offset(0.0)
+    Compute(lmp, narg, arg), plane(PLANE_Z), offset(0.0), held{}
 {
   int walltype = 2;
   for (int iarg = 3; iarg < narg; iarg += 2) {
@@ -70,6 +70,11 @@ ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
   size_array_cols = NCOLUMN;
   extarray = 0;
   memory->create(array, size_array_rows, size_array_cols, "cell/shape:array");
+  // the wall triangles held at the last evaluation (doc/compute_cell_shape.md)
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  vector = held;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -98,15 +103,18 @@ void ComputeCellShape::compute_array()
 {
   invoked_array = update->ntimestep;
   cells->reduce(nullptr, &mine, &corners);
-  cells->gather_triangles(mine, *walls, &corners);
+  cells->home_triangles(mine, corners, *walls);
 
-  const int n = size_array_rows;
-  rows.assign((size_t) n * NCOLUMN, 0.0);
-  for (int c = comm->me; c < n; c += comm->nprocs) measure(c, &rows[(size_t) c * NCOLUMN]);
-  MPI_Allreduce(rows.data(), &array[0][0], n * NCOLUMN, MPI_DOUBLE, MPI_SUM, world);
+  const std::vector<int> &home = cells->home_cells();
+  rows.assign(home.size() * NCOLUMN, 0.0);
+  for (int h = 0; h < (int) home.size(); h++) {
+    rows[(size_t) h * NCOLUMN + ID] = cells->id(home[h]);
+    measure(h, &rows[(size_t) h * NCOLUMN]);
+  }
+  cells->registry().allgather(NCOLUMN, rows, all);
+  std::copy(all.begin(), all.end(), &array[0][0]);
 
-  for (int c = 0; c < n; c++) {
-    array[c][ID] = cells->id(c);
+  for (int c = 0; c < size_array_rows; c++) {
     if (array[c][LOOPS] == -2.0)
       error->all(FLERR,
                  "Compute cell/shape: cell {} encloses no volume: its wall triangles are not a "
@@ -123,16 +131,25 @@ void ComputeCellShape::compute_array()
   }
 }
 
+/* ---------------------------------------------------------------------- */
+
+void ComputeCellShape::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  if (invoked_array != update->ntimestep) compute_array();
+  cells->held_triangles(mine, *walls, held);
+}
+
 /* ----------------------------------------------------------------------
-   one cell's row (doc/compute_cell_shape.md); LOOPS -2 if the wall encloses no volume, LOOPS or
-   HULLAREA -1 if the section or the hull failed
+   the row of home cell h (doc/compute_cell_shape.md); LOOPS -2 if the wall encloses no volume,
+   LOOPS or HULLAREA -1 if the section or the hull failed
 ------------------------------------------------------------------------- */
 
-void ComputeCellShape::measure(int c, double *row)
+void ComputeCellShape::measure(int h, double *row)
 {
-  const double *tri = walls->xyz(c);
-  const tagint *ids = walls->ids(c);
-  const int nt = walls->ntri(c);
+  const double *tri = walls->xyz(h);
+  const tagint *ids = walls->ids(h);
+  const int nt = walls->ntri(h);
 
   // volume, centroid and second moments of the enclosed volume from the tetrahedra (0, a, b, c):
   // V_t = a . (b x c) / 6, int x dV = V_t (a + b + c) / 4,

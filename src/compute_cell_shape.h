@@ -23,6 +23,7 @@ class ComputeCellShape : public Compute {
   ~ComputeCellShape() override;
   void init() override;
   void compute_array() override;
+  void compute_vector() override;
 
   // columns of the global array
   enum {
@@ -48,13 +49,14 @@ class ComputeCellShape : public Compute {
  private:
   enum { PLANE_X, PLANE_Y, PLANE_Z, PLANE_PRINCIPAL };
   std::unique_ptr<CellReduce> cells;
-  std::unique_ptr<CellTriangles> walls;    // every cell's wall triangles, on every rank
+  std::unique_ptr<CellTriangles> walls;    // the wall triangles of this rank's home cells
   int plane;
   double offset;
-  std::vector<double> mine, rows;
+  std::vector<double> mine, rows, all;    // this rank's triangles, home cells' rows, every row
   std::vector<tagint> corners;
+  double held[3];    // the vector: wall triangles held (CellReduce::held_triangles)
 
-  void measure(int c, double *row);
+  void measure(int h, double *row);
 };
 
 }    // namespace LAMMPS_NS
