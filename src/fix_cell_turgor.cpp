@@ -65,14 +65,13 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0),
     drive(DRIVE_PSI), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
     air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
-    air_flow(0), area_fraction(1.0), surface_group(-1), mass_transfer(0.0), ea(0.0), tref(298.15),
-    solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
-    tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
-    fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
-    max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
-    exchange_stiffness(0.0), accel_auto(0), accel_every(0), accel_hold(0), accel_pending(0),
-    open_samples(0), sealed_samples(0), accel_tol(0.0), accel_min(1.0), accel_max(HUGE_VAL),
-    accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
+    air_flow(0), area_fraction(1.0), surface_group(-1), mass_transfer(0.0), ea(0.0),
+    osmotic_model(lmp, "Fix cell/turgor"), temperature(0.0), tau(0.0), bulk(0.0), kfluid(0.0),
+    limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), physical_time(0.0),
+    water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1},
+    water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0), accel_auto(0), accel_every(0),
+    accel_hold(0), accel_pending(0), open_samples(0), sealed_samples(0), accel_tol(0.0),
+    accel_min(1.0), accel_max(HUGE_VAL), accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -124,7 +123,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
         parse_quantity(air_hm, v[2]);
       }
       // numbers are checked now, variables at every transfer (placeholders pass the check)
-      const double t0 = air_t.name.empty() ? air_t.value : tref;
+      const double t0 = air_t.name.empty() ? air_t.value : osmotic_model.tref;
       check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0,
                 air_hm.name.empty() ? air_hm.value : 0.0);
       if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
@@ -165,29 +164,6 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       ea = utils::numeric(FLERR, value, false, lmp);
       if (ea < 0.0)
         error->all(FLERR, "Fix cell/turgor: activation energy Ea = {} must be >= 0", ea);
-    } else if (key == "Tref") {
-      tref = utils::numeric(FLERR, value, false, lmp);
-      if (!(tref > 0.0))
-        error->all(FLERR, "Fix cell/turgor: reference temperature Tref = {} K must be > 0", tref);
-    } else if (key == "solids") {
-      solids_fraction = utils::numeric(FLERR, value, false, lmp);
-      if (!(solids_fraction > 0.0 && solids_fraction < 1.0))
-        error->all(FLERR,
-                   "Fix cell/turgor: solids = {} must be in (0, 1) (wet-basis mass fraction)",
-                   solids_fraction);
-    } else if (key == "isotherm") {
-      if (strcmp(value, "none") == 0) {
-        isotherm = 0;
-      } else if (strcmp(value, "gab") == 0) {
-        char **v = values(key, 4);
-        gab_xm = utils::numeric(FLERR, v[1], false, lmp);
-        gab_c = utils::numeric(FLERR, v[2], false, lmp);
-        gab_k = utils::numeric(FLERR, v[3], false, lmp);
-        isotherm = 1;
-        used = 5;
-      } else {
-        error->all(FLERR, "Fix cell/turgor: unknown isotherm '{}' (expected gab or none)", value);
-      }
     } else if (key == "rhow") {
       rhow = utils::numeric(FLERR, value, false, lmp);
       if (rhow <= 0.0)
@@ -214,14 +190,6 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     } else if (key == "bulk") {
       bulk = utils::numeric(FLERR, value, false, lmp);
       if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
-    } else if (key == "osmotic") {
-      if (strcmp(value, "fixed") == 0)
-        osmotic_law = FIXED;
-      else if (strcmp(value, "vanthoff") == 0)
-        osmotic_law = VANTHOFF;
-      else
-        error->all(FLERR, "Fix cell/turgor: unknown osmotic law '{}' (expected fixed or vanthoff)",
-                   value);
     } else if (key == "limit") {
       if (strcmp(value, "error") == 0)
         limit = LIMIT_ERROR;
@@ -231,6 +199,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix cell/turgor: unknown limit action '{}' (expected error or warn)",
                    value);
       limit_set = 1;
+    } else if (int n = osmotic_model.parse(narg - iarg, &arg[iarg])) {
+      used = n;
     } else if (key == "file") {
       CellParams params(lmp, value, "Fix cell/turgor");
       lp = params.nonnegative("turgor_LP");
@@ -239,18 +209,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       // optional drying keys (doc/fix_cell_turgor.md)
       if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea");
       if (params.has("turgor_Lcc")) file_lcc = params.nonnegative("turgor_Lcc");
-      if (params.has("turgor_solids")) solids_fraction = params.positive("turgor_solids");
-      if (params.has("turgor_gab_Xm") || params.has("turgor_gab_C") || params.has("turgor_gab_K")) {
-        gab_xm = params.number("turgor_gab_Xm");
-        gab_c = params.number("turgor_gab_C");
-        gab_k = params.number("turgor_gab_K");
-        isotherm = 1;
-      }
-      if (!(solids_fraction < 1.0))
-        error->all(FLERR,
-                   "Fix cell/turgor: {}: turgor_solids = {} must be in (0, 1) (wet-basis mass "
-                   "fraction)",
-                   value, solids_fraction);
+      osmotic_model.read(params, value);
     } else if (key == "turgor") {
       measure = value;
     } else if (key == "tau") {
@@ -271,17 +230,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
   if (ndrive > 1)
     error->all(FLERR, "Fix cell/turgor: give one drive of psi, air and curve, not{}", drives);
-  if (isotherm && solids_fraction == 0.0)
-    error->all(FLERR,
-               "Fix cell/turgor: the sorption isotherm needs the moisture content X: give the dry "
-               "solids with 'solids w_s'");
-  if (isotherm && !(gab_xm > 0.0 && gab_c > 0.0 && gab_k > 0.0 && gab_k <= 1.0))
-    error->all(FLERR,
-               "Fix cell/turgor: GAB isotherm Xm = {}, C = {}, K = {} is impossible: needs Xm > 0, "
-               "C > 0 and 0 < K <= 1 (K > 1 diverges below a_w = 1)",
-               gab_xm, gab_c, gab_k);
+  osmotic_model.check();
   // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
-  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : CellQuantity{tref, "", -1};
+  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : CellQuantity{osmotic_model.tref, "", -1};
   if (accel_auto && drive == DRIVE_CURVE)
     error->all(FLERR,
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
@@ -542,7 +493,7 @@ void FixCellTurgor::evaluate(bool transfer)
                update->ntimestep);
   temperature = t;
   // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
-  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, tref) : 1.0;
+  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
   const double lpt = lp * arrhenius;
   double psi_ext = 0.0, hm = 0.0, rho_sat = 0.0, rho_air = 0.0, target = 0.0;
   if (drive == DRIVE_PSI) {
@@ -595,10 +546,9 @@ void FixCellTurgor::evaluate(bool transfer)
 
     if (s.mass0 == 0.0) s.mass0 = mass;
     // dry solids S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water
-    if (s.solids == 0.0 && solids_fraction > 0.0)
-      s.solids = s.mass0 * solids_fraction / (1.0 - solids_fraction);
+    if (s.solids == 0.0) s.solids = osmotic_model.solids(s.mass0);
     double slope;
-    const double pi = osmotic_pressure(s, mass, t, &slope);
+    const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, &slope);
     // psi_cell = P_T - pi (doc/model.md §5.1)
     const double psi_cell = turgor - pi;
     double conductance, rate;
@@ -934,32 +884,6 @@ double FixCellTurgor::offset_time() const
 }
 
 /* ----------------------------------------------------------------------
-   osmotic pressure of a cell at fluid mass M and temperature T, and slope = -dpi/dM:
-   solutes pi0 (T/Tref) [M0/M with van 't Hoff]; with the GAB isotherm, where it is larger, the
-   sorption pressure -(R T/V_w) ln a_GAB(X), X = M/S (doc/model.md §5.5, §5.10)
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::osmotic_pressure(const CellState &s, double mass, double t,
-                                       double *slope) const
-{
-  const bool vanthoff = osmotic_law == VANTHOFF && s.mass0 > 0.0;
-  // pi = pi0 (T/Tref) M0/M (van 't Hoff, non-permeating solutes)
-  double pi = s.pi0 * (t / tref) * (vanthoff ? s.mass0 / mass : 1.0);
-  if (slope) *slope = vanthoff ? pi / mass : 0.0;
-  if (!isotherm || s.solids <= 0.0) return pi;
-  const CellWater::Gab gab{gab_xm, gab_c, gab_k};
-  const double x = mass / s.solids;
-  const double a = gab.activity(x);
-  if (!(a < 1.0)) return pi;
-  // pi_sorption = -(R T / V_w) ln a_GAB(X), -dpi/dM = (R T / V_w) (da/dX) / (a S)
-  const double sorption = -CellWater::kelvin_potential(a, t);
-  if (sorption <= pi) return pi;
-  if (slope)
-    *slope = CellWater::GAS_R * t / CellWater::WATER_V * gab.activity_slope(x) / (a * s.solids);
-  return sorption;
-}
-
-/* ----------------------------------------------------------------------
    the turgor that drives the flux. turgor sph: the mean SPH pressure. turgor wall: the mean SPH
    pressure minus its running mean offset from the wall load, so that the steady state is the wall
    load P_W = pi + psi_ext while each transfer sees the fluid's instantaneous, smooth response (the
@@ -997,7 +921,7 @@ bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, d
   const double stretch = sqrt(cells->area(c) / area0);
 
   std::string why;
-  if (osmotic_law == FIXED && demand > pmax)
+  if (!osmotic_model.vanthoff() && demand > pmax)
     why = "its demanded turgor pi + psi_ext exceeds the wall's limit-point pressure";
   else if (stretch > pow(7.0, 1.0 / 6.0) && turgor < demand)
     why = fmt::format("its wall passed the limit-point stretch 7^(1/6) = 1.383 (stretch {:.4g}) "
@@ -1042,7 +966,9 @@ bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 {
   auto it = state.find(cell);
   if (it == state.end()) return false;
-  pi = osmotic_pressure(it->second, mass, temperature > 0.0 ? temperature : tref, nullptr);
+  const CellState &s = it->second;
+  pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass,
+                              temperature > 0.0 ? temperature : osmotic_model.tref, nullptr);
   return true;
 }
 
@@ -1058,7 +984,7 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
   const CellState &s = it->second;
   w.moisture = s.solids > 0.0 ? mass / s.solids : 0.0;
   w.relative = s.mass0 > 0.0 ? mass / s.mass0 : 0.0;
-  w.temperature = temperature > 0.0 ? temperature : tref;
+  w.temperature = temperature > 0.0 ? temperature : osmotic_model.tref;
   w.psi_surface = s.psi_surface;
   w.rate = s.rate;
   return true;
@@ -1200,8 +1126,8 @@ void FixCellTurgor::restart(char *buf)
     state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;
     other_solids = other_solids ||
-        (solids > 0.0 && solids_fraction > 0.0 &&
-         fabs(solids - v[1] * solids_fraction / (1.0 - solids_fraction)) > 1e-12 * solids);
+        (solids > 0.0 && osmotic_model.solids_fraction > 0.0 &&
+         fabs(solids - osmotic_model.solids(v[1])) > 1e-12 * solids);
   }
   if (other_pi0 && comm->me == 0)
     error->warning(FLERR,
@@ -1213,7 +1139,7 @@ void FixCellTurgor::restart(char *buf)
         FLERR,
         "Fix cell/turgor: cells continue with the dry solids stored in the restart file, "
         "not those of solids = {}",
-        solids_fraction);
+        osmotic_model.solids_fraction);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -8,6 +8,7 @@
 #define LMP_FIX_CELL_TURGOR_H
 
 #include "cell_network.h"
+#include "cell_osmotic.h"
 #include "cell_quantity.h"
 #include "fix.h"
 
@@ -53,7 +54,6 @@ class FixCellTurgor : public Fix {
   const CellRegistry &registry() const;
 
  protected:
-  enum Osmotic { FIXED = 0, VANTHOFF = 1 };
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
   enum Drive { DRIVE_PSI = 0, DRIVE_AIR = 1, DRIVE_CURVE = 2 };
   struct CellState {
@@ -76,18 +76,16 @@ class FixCellTurgor : public Fix {
   CellQuantity psi, temp, air_t, air_rh, air_hm, curve;
   CellQuantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
   int air_flow;
-  double area_fraction;      // share of the wall area in contact with the air
-  int surface_group;         // 'surface': air only on the triangles of this group's atoms, or -1
-  double mass_transfer;      // h_m of the last evaluation (m/s)
-  double ea, tref;           // activation energy of L_P (J/mol), reference temperature (K)
-  double solids_fraction;    // wet-basis solids fraction w_s, 0 = none
-  int isotherm;              // 1: GAB isotherm below
-  double gab_xm, gab_c, gab_k;
-  double temperature;    // cell temperature T of the last evaluation (K)
-  double tau;            // MD time of the running mean of the offset (s), 0 = 100 N dt
-  double bulk;           // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
-  double kfluid;         // K in use
-  int osmotic_law, limit, limit_set, fluidtype, walltype;
+  double area_fraction;         // share of the wall area in contact with the air
+  int surface_group;            // 'surface': air only on the triangles of this group's atoms, or -1
+  double mass_transfer;         // h_m of the last evaluation (m/s)
+  double ea;                    // activation energy of L_P (J/mol)
+  CellOsmotic osmotic_model;    // pi(T, M): solutes, dry solids, GAB; Tref
+  double temperature;           // cell temperature T of the last evaluation (K)
+  double tau;                   // MD time of the running mean of the offset (s), 0 = 100 N dt
+  double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
+  double kfluid;    // K in use
+  int limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
   std::map<tagint, CellState> state;    // the home cells' (and on rank 0 unknown cells') state
   std::vector<double> gt0;              // G t0 per bond type from the bond style, empty without it
@@ -135,7 +133,6 @@ class FixCellTurgor : public Fix {
   bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
-  double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
   void parse_quantity(CellQuantity &in, const char *arg);
   void check_air(double t, double rh, double hm);
   double flow_transfer(double t, double u, double l);
