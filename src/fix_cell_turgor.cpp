@@ -10,6 +10,7 @@
 
 #include "atom.h"
 #include "bond.h"
+#include "cell_args.h"
 #include "cell_compat.h"
 #include "cell_junctions.h"
 #include "cell_params.h"
@@ -62,12 +63,9 @@ static const int NETWORK_VALUES = 6;
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0),
-    drive(DRIVE_PSI), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
-    air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
-    air_flow(0), area_fraction(1.0), surface_group(-1), mass_transfer(0.0), ea(0.0),
-    osmotic_model(lmp, "Fix cell/turgor"), temperature(0.0), tau(0.0), bulk(0.0), kfluid(0.0),
-    limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), physical_time(0.0),
+    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0), ea(0.0),
+    osmotic_model(lmp, "Fix cell/turgor"), drive(lmp, "Fix cell/turgor"), tau(0.0), bulk(0.0),
+    kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), physical_time(0.0),
     water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1},
     water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0), accel_auto(0), accel_every(0),
     accel_hold(0), accel_pending(0), open_samples(0), sealed_samples(0), accel_tol(0.0),
@@ -80,13 +78,12 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
 
-  bool lp_set = false, pi0_set = false, temp_set = false;
+  bool lp_set = false, pi0_set = false;
   int bondtype = 0;
   std::string areas;         // 'exchange ... areas FILE'
   bool lcc_file = false;     // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
   double file_lcc = -1.0;    // turgor_Lcc of the last 'file', -1 if none
-  std::string measure = "wall", drives;
-  int ndrive = 0;
+  std::string measure = "wall";
   int iarg = 4;
   // the values after keyword key: n of them, or stop
   auto values = [&](const std::string &key, int n) {
@@ -104,62 +101,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     } else if (key == "pi0") {
       pi0 = utils::numeric(FLERR, value, false, lmp);
       pi0_set = true;
-    } else if (key == "psi") {
-      parse_quantity(psi, value);
-      drives += " psi";
-      ndrive++;
-    } else if (key == "air") {
-      char **v = values(key, 3);
-      parse_quantity(air_t, v[0]);
-      parse_quantity(air_rh, v[1]);
-      used = 4;
-      air_flow = strcmp(v[2], "flow") == 0;
-      if (air_flow) {
-        v = values(key, 5);
-        parse_quantity(air_speed, v[3]);
-        parse_quantity(air_length, v[4]);
-        used = 6;
-      } else {
-        parse_quantity(air_hm, v[2]);
-      }
-      // numbers are checked now, variables at every transfer (placeholders pass the check)
-      const double t0 = air_t.name.empty() ? air_t.value : osmotic_model.tref;
-      check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0,
-                air_hm.name.empty() ? air_hm.value : 0.0);
-      if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
-        flow_transfer(t0, air_speed.value, air_length.value);
-      // optional 'area f' and 'surface group-ID', in either order
-      while (iarg + used + 1 < narg) {
-        const char *word = arg[iarg + used], *next = arg[iarg + used + 1];
-        if (strcmp(word, "area") == 0) {
-          area_fraction = utils::numeric(FLERR, next, false, lmp);
-          if (!(area_fraction > 0.0 && area_fraction <= 1.0))
-            error->all(FLERR, "Fix cell/turgor: air area fraction = {} must be in (0, 1]",
-                       area_fraction);
-        } else if (strcmp(word, "surface") == 0) {
-          surface_group = group->find(next);
-          if (surface_group < 0)
-            error->all(FLERR, "Fix cell/turgor: air surface group {} does not exist", next);
-        } else
-          break;
-        used += 2;
-      }
-      drive = DRIVE_AIR;
-      drives += " air";
-      ndrive++;
-    } else if (key == "curve") {
-      parse_quantity(curve, value);
-      if (curve.name.empty())
-        error->all(FLERR, "Fix cell/turgor: curve = {} must be an equal-style variable v_name",
-                   value);
-      drive = DRIVE_CURVE;
-      drives += " curve";
-      ndrive++;
-    } else if (key == "temp") {
-      parse_quantity(temp, value);
-      if (temp.name.empty() && !(temp.value > 0.0))
-        error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0", temp.value);
-      temp_set = true;
+    } else if (int n = drive.parse(narg - iarg, &arg[iarg], osmotic_model.tref)) {
+      used = n;
     } else if (key == "Ea") {
       ea = utils::numeric(FLERR, value, false, lmp);
       if (ea < 0.0)
@@ -175,7 +118,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                    "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
                    v[0], v[1]);
       lcc_file = strcmp(v[0], "file") == 0;
-      if (!lcc_file) parse_quantity(lcc, v[0]);
+      if (!lcc_file) lcc = CellArgs::quantity(lmp, v[0]);
       if (!lcc_file && !lcc.is_variable() && lcc.value < 0.0)
         error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0",
                    lcc.value);
@@ -228,12 +171,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (lp < 0.0) error->all(FLERR, "Fix cell/turgor: wall permeability LP = {} must be >= 0", lp);
   if (!pi0_set) error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
-  if (ndrive > 1)
-    error->all(FLERR, "Fix cell/turgor: give one drive of psi, air and curve, not{}", drives);
+  drive.check(osmotic_model.tref);
   osmotic_model.check();
-  // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
-  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : CellQuantity{osmotic_model.tref, "", -1};
-  if (accel_auto && drive == DRIVE_CURVE)
+  if (accel_auto && drive.kind == CellDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
                "flux that the mechanics could delay)");
@@ -245,7 +185,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                  "parameter file: give 'file name' with that key");
     lcc = CellQuantity{file_lcc, "", -1};
   }
-  if (bondtype && drive == DRIVE_CURVE)
+  if (bondtype && drive.kind == CellDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
                "cell's water)");
@@ -255,7 +195,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
-  if (surface_group >= 0) cells->set_surface(group->bitmask[surface_group]);
+  if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
   if (bondtype) {
     junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
     network = std::make_unique<CellNetwork>();
@@ -320,59 +260,6 @@ int FixCellTurgor::parse_accel(int narg, char **arg, const std::string &command)
   return used;
 }
 
-/* ----------------------------------------------------------------------
-   a number or v_name; variables are looked up in init() (they may be defined after the fix)
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::parse_quantity(CellQuantity &in, const char *arg)
-{
-  if (strncmp(arg, "v_", 2) == 0)
-    in = CellQuantity{0.0, arg + 2, -1};
-  else
-    in = CellQuantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
-}
-
-/* ----------------------------------------------------------------------
-   h_m of air at T flowing at U >= 0 along a sample of length L > 0: laminar flat plate,
-   Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::flow_transfer(double t, double u, double l)
-{
-  if (!(u >= 0.0)) error->all(FLERR, "Fix cell/turgor: air speed U = {} m/s must be >= 0", u);
-  if (!(l > 0.0)) error->all(FLERR, "Fix cell/turgor: sample length L = {} m must be > 0", l);
-  if (!(t > 250.0 && t < 450.0))
-    error->all(FLERR,
-               "Fix cell/turgor: air temperature T = {} K is outside 250-450 K, the range of the "
-               "vapour diffusivity in air behind 'flow' (give h_m instead)",
-               t);
-  const double re = CellWater::reynolds(t, u, l);
-  if (!(re < 5e5))
-    error->all(FLERR,
-               "Fix cell/turgor: air flow U = {} m/s along L = {} m has Re = {:.4g}, beyond the "
-               "laminar flat-plate correlation (Re < 5e5): give h_m instead",
-               u, l, re);
-  return CellWater::plate_transfer(t, u, l);
-}
-
-/* ----------------------------------------------------------------------
-   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, h_m >= 0
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::check_air(double t, double rh, double hm)
-{
-  if (!(t > 0.0)) error->all(FLERR, "Fix cell/turgor: air temperature T = {} K must be > 0", t);
-  if (!(t < CellWater::CRITICAL_T))
-    error->all(FLERR,
-               "Fix cell/turgor: air temperature T = {} K must be below the critical point of "
-               "water, {} K",
-               t, CellWater::CRITICAL_T);
-  if (!(rh > 0.0 && rh <= 1.0))
-    error->all(FLERR, "Fix cell/turgor: relative humidity RH = {} must be in (0, 1]", rh);
-  if (!(hm >= 0.0))
-    error->all(FLERR, "Fix cell/turgor: mass-transfer coefficient hm = {} m/s must be >= 0", hm);
-}
-
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::~FixCellTurgor() = default;
@@ -407,9 +294,8 @@ void FixCellTurgor::init()
     if (state.find(cells->id(c)) == state.end()) {
       state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
     }
-  for (CellQuantity *in :
-       {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length, &lcc})
-    in->resolve(lmp, "Fix cell/turgor: variable");
+  drive.init();
+  lcc.resolve(lmp, "Fix cell/turgor: variable");
   if (junctions) junctions->init();
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
@@ -485,40 +371,13 @@ void FixCellTurgor::evaluate(bool transfer)
   failure = Failure{cells->ncell(), ""};
   warnings.clear();
 
-  // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
-  // X/X0(t) is evaluated at its end
-  const double t = temp.get(lmp);
-  if (!(t > 0.0))
-    error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0 (step {})", t,
-               update->ntimestep);
-  temperature = t;
+  // T and the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
+  // X/X0(t) at its end
+  drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
+  const double t = drive.temperature, psi_ext = drive.psi_ext;
   // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
   const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
   const double lpt = lp * arrhenius;
-  double psi_ext = 0.0, hm = 0.0, rho_sat = 0.0, rho_air = 0.0, target = 0.0;
-  if (drive == DRIVE_PSI) {
-    psi_ext = psi.get(lmp);
-  } else if (drive == DRIVE_AIR) {
-    const double tair = air_t.get(lmp), rh = air_rh.get(lmp);
-    hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
-    mass_transfer = hm;
-    check_air(tair, rh, hm);
-    if (!(t < CellWater::CRITICAL_T))
-      error->all(FLERR,
-                 "Fix cell/turgor: temperature T = {} K must be below the critical point of water, "
-                 "{} K",
-                 t, CellWater::CRITICAL_T);
-    rho_sat = CellWater::saturation_density(t);
-    rho_air = rh * CellWater::saturation_density(tair);
-    // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
-    psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
-  } else {
-    if (transfer) physical_time += dtw;
-    target = curve.get(lmp);
-    if (!(target > 0.0))
-      error->all(FLERR, "Fix cell/turgor: curve X/X0 = {} must be > 0 (physical time {} s)", target,
-                 physical_time);
-  }
 
   for (int h = 0; h < (int) home.size(); h++) {
     const int c = home[h];
@@ -551,32 +410,19 @@ void FixCellTurgor::evaluate(bool transfer)
     const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, &slope);
     // psi_cell = P_T - pi (doc/model.md §5.1)
     const double psi_cell = turgor - pi;
-    double conductance, rate;
-    if (drive == DRIVE_AIR) {
-      // wall and air film in series on the exposed area f A, or f A_surface (doc/model.md §5.8)
-      const double exposed = area_fraction * (surface_group >= 0 ? cells->surface_area(c) : area);
-      const auto air = CellWater::air_flux(psi_cell, t, rhow * lpt, hm, rho_sat, rho_air);
-      conductance = exposed * air.conductance;
-      rate = -exposed * air.flux;
-      s.psi_surface = air.psi_surface;
-    } else if (drive == DRIVE_PSI) {
-      // dM/dt = rho_w L_P A (psi_ext - psi_cell) (doc/model.md §5.1)
-      conductance = rhow * lpt * area;
-      rate = conductance * (psi_ext - psi_cell);
-      s.psi_surface = psi_ext;
-    } else {
-      conductance = 0.0;
-      rate = (target * s.mass0 - mass) / dtw;
-      s.psi_surface = psi_cell;
-    }
+    const CellDrive::Flux flux =
+        drive.flux(psi_cell, rhow * lpt, area, cells->surface_area(c), mass, s.mass0, dtw);
+    const double conductance = flux.conductance, rate = flux.rate;
+    s.psi_surface = flux.psi_surface;
     s.rate = rate;
     // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
     const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
     const double relax = conductance * std::max(0.0, stiffness);
     const double z = dtw * relax;
-    if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
+    if (drive.kind != CellDrive::CURVE)
+      max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
-    if (drive != DRIVE_CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
+    if (drive.kind != CellDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
     if (accel_pending) first_accel = std::min(first_accel, start_accel(c, conductance, slope));
     if (sample) sample_probe(s, position, turgor, rate, conductance, sealed);
     if (junctions) {
@@ -594,8 +440,9 @@ void FixCellTurgor::evaluate(bool transfer)
 
     // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
     // M = M0 X/X0(t + dtw)
-    const double dmass = drive == DRIVE_CURVE ? target * s.mass0 - mass
-                                              : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
+    const double dmass = drive.kind == CellDrive::CURVE
+        ? drive.target * s.mass0 - mass
+        : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
     if (!(mass + dmass > 0.0)) {
       failure = Failure{c,
                         fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
@@ -676,7 +523,7 @@ void FixCellTurgor::evaluate(bool transfer)
   double all_moved;
   MPI_Allreduce(&moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
   water_moved += all_moved;
-  if (drive != DRIVE_CURVE) physical_time += dtw;
+  if (drive.kind != CellDrive::CURVE) physical_time += dtw;
   if (accel_auto && position == every + hold - 1) adapt_accel(every);
 }
 
@@ -968,7 +815,8 @@ bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
   if (it == state.end()) return false;
   const CellState &s = it->second;
   pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass,
-                              temperature > 0.0 ? temperature : osmotic_model.tref, nullptr);
+                              drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref,
+                              nullptr);
   return true;
 }
 
@@ -984,7 +832,7 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
   const CellState &s = it->second;
   w.moisture = s.solids > 0.0 ? mass / s.solids : 0.0;
   w.relative = s.mass0 > 0.0 ? mass / s.mass0 : 0.0;
-  w.temperature = temperature > 0.0 ? temperature : osmotic_model.tref;
+  w.temperature = drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref;
   w.psi_surface = s.psi_surface;
   w.rate = s.rate;
   return true;
@@ -1001,11 +849,11 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved,        physical_time,   (double) cells->ncell(),
-                           max_imbalance,      max_stiffness,   temperature,
-                           mass_transfer,      accel,           lag_estimate,
-                           lag_error,          water_exchanged, exchange_net,
-                           exchange_stiffness, busiest};
+  const double values[] = {water_moved,         physical_time,   (double) cells->ncell(),
+                           max_imbalance,       max_stiffness,   drive.temperature,
+                           drive.mass_transfer, accel,           lag_estimate,
+                           lag_error,           water_exchanged, exchange_net,
+                           exchange_stiffness,  busiest};
   return values[n];
 }
 
@@ -1025,7 +873,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
   if (key == "accel") {
     const int used = 1 + parse_accel(narg - 1, &arg[1], "Fix_modify cell/turgor");
-    if (accel_auto && drive == DRIVE_CURVE)
+    if (accel_auto && drive.kind == CellDrive::CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
     if (accel_auto && junctions)
       error->all(FLERR,
@@ -1039,11 +887,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
       error->all(FLERR, "Fix_modify cell/turgor: wall permeability LP = {} must be >= 0", value);
     lp = value;
   } else if (key == "psi") {
-    if (drive != DRIVE_PSI)
-      error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
-                 drive == DRIVE_AIR ? "air" : "curve");
-    parse_quantity(psi, arg[1]);
-    psi.resolve(lmp, "Fix cell/turgor: variable");
+    drive.modify_psi(arg[1]);
   }
   return 2;
 }

@@ -7,6 +7,7 @@
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
+#include "cell_drive.h"
 #include "cell_network.h"
 #include "cell_osmotic.h"
 #include "cell_quantity.h"
@@ -55,7 +56,6 @@ class FixCellTurgor : public Fix {
 
  protected:
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
-  enum Drive { DRIVE_PSI = 0, DRIVE_AIR = 1, DRIVE_CURVE = 2 };
   struct CellState {
     double mass0;                // fluid mass when the fix first saw the cell (kg)
     double pi0;                  // osmotic pressure at mass0 and Tref (Pa)
@@ -72,16 +72,9 @@ class FixCellTurgor : public Fix {
   enum Probe { Y0, ST, SY, STT, STY, SYY, RATE, COND, SY2, SYY2, NPROBE };
 
   double lp, pi0, rhow, accel;
-  int drive;
-  CellQuantity psi, temp, air_t, air_rh, air_hm, curve;
-  CellQuantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
-  int air_flow;
-  double area_fraction;         // share of the wall area in contact with the air
-  int surface_group;            // 'surface': air only on the triangles of this group's atoms, or -1
-  double mass_transfer;         // h_m of the last evaluation (m/s)
   double ea;                    // activation energy of L_P (J/mol)
   CellOsmotic osmotic_model;    // pi(T, M): solutes, dry solids, GAB; Tref
-  double temperature;           // cell temperature T of the last evaluation (K)
+  CellDrive drive;              // T and psi_ext, air or a curve: each cell's flux
   double tau;                   // MD time of the running mean of the offset (s), 0 = 100 N dt
   double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
   double kfluid;    // K in use
@@ -133,9 +126,6 @@ class FixCellTurgor : public Fix {
   bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
   double pair_bulk_modulus();
-  void parse_quantity(CellQuantity &in, const char *arg);
-  void check_air(double t, double rh, double hm);
-  double flow_transfer(double t, double u, double l);
 };
 
 }    // namespace LAMMPS_NS
