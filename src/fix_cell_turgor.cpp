@@ -40,7 +40,7 @@ using MathConst::MY_PI;
 static const int RESTART_VERSION = 5;
 
 // restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3), the
-// accel auto cycle's sums (4: NPROBE = 10 values)
+// accel auto cycle's sums (4: CellAccel::NPROBE = 10 values)
 static int restart_values(int version)
 {
   return version >= 4 ? 16 : (version >= 3 ? 6 : 5);
@@ -63,13 +63,11 @@ static const int NETWORK_VALUES = 6;
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0), ea(0.0),
+    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(lmp), ea(0.0),
     osmotic_model(lmp, "Fix cell/turgor"), drive(lmp, "Fix cell/turgor"), tau(0.0), bulk(0.0),
     kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), physical_time(0.0),
     water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1},
-    water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0), accel_auto(0), accel_every(0),
-    accel_hold(0), accel_pending(0), open_samples(0), sealed_samples(0), accel_tol(0.0),
-    accel_min(1.0), accel_max(HUGE_VAL), accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
+    water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -129,7 +127,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
         used = 6;
       }
     } else if (key == "accel") {
-      used = 1 + parse_accel(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
+      used = 1 + accel.parse(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
     } else if (key == "bulk") {
       bulk = utils::numeric(FLERR, value, false, lmp);
       if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
@@ -173,7 +171,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
   drive.check(osmotic_model.tref);
   osmotic_model.check();
-  if (accel_auto && drive.kind == CellDrive::CURVE)
+  if (accel.automatic && drive.kind == CellDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
                "flux that the mechanics could delay)");
@@ -189,7 +187,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
                "cell's water)");
-  if (bondtype && accel_auto)
+  if (bondtype && accel.automatic)
     error->all(FLERR,
                "Fix cell/turgor: exchange does not work with accel auto: give accel a number");
 
@@ -207,57 +205,6 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   restart_global = 1;
   comm_forward = 1;
-}
-
-/* ----------------------------------------------------------------------
-   the values after 'accel': a number, or auto tol [min a] [max a] [start a] [every n] [hold n]
-   (doc/model.md §5.12); returns how many it used
-------------------------------------------------------------------------- */
-
-int FixCellTurgor::parse_accel(int narg, char **arg, const std::string &command)
-{
-  if (narg < 1) error->all(FLERR, "{}: missing value after 'accel'", command);
-  if (strcmp(arg[0], "auto") != 0) {
-    const double value = utils::numeric(FLERR, arg[0], false, lmp);
-    if (value <= 0.0) error->all(FLERR, "{}: accel = {} must be > 0", command, value);
-    accel = value;
-    accel_auto = accel_pending = 0;
-    return 1;
-  }
-  if (narg < 2) error->all(FLERR, "{}: missing tolerance after 'accel auto'", command);
-  const double tol = utils::numeric(FLERR, arg[1], false, lmp);
-  if (!(tol > 0.0 && tol < 1.0))
-    error->all(FLERR, "{}: accel auto tolerance = {} must be in (0, 1)", command, tol);
-  double lo = 1.0, hi = HUGE_VAL, start = 0.0;
-  int every = 0, hold = 0, used = 2;
-  while (used + 1 < narg) {
-    const std::string key = arg[used];
-    if (key != "min" && key != "max" && key != "start" && key != "every" && key != "hold") break;
-    if (key == "every" || key == "hold") {
-      const int value = utils::inumeric(FLERR, arg[used + 1], false, lmp);
-      if (value < 4)
-        error->all(FLERR, "{}: accel auto {} = {} must be >= 4 transfers", command, key, value);
-      (key == "every" ? every : hold) = value;
-    } else {
-      const double value = utils::numeric(FLERR, arg[used + 1], false, lmp);
-      if (!(value > 0.0))
-        error->all(FLERR, "{}: accel auto {} = {} must be > 0", command, key, value);
-      (key == "min" ? lo : key == "max" ? hi : start) = value;
-    }
-    used += 2;
-  }
-  if (lo > hi) error->all(FLERR, "{}: accel auto min = {} must be <= max = {}", command, lo, hi);
-  if (start > 0.0 && (start < lo || start > hi))
-    error->all(FLERR, "{}: accel auto start = {} must be in [min, max] = [{}, {}]", command, start,
-               lo, hi);
-  accel_auto = accel_pending = 1;
-  accel_tol = tol;
-  accel_min = lo;
-  accel_max = hi;
-  accel_start = start;
-  accel_every = every;
-  accel_hold = hold;
-  return used;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -355,14 +302,9 @@ void FixCellTurgor::evaluate(bool transfer)
   // accel auto: transfer j (at step j N; the next one when not transferring) is at position
   // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
   // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
-  const bigint every = accel_window(), hold = accel_seal();
-  const bigint j = update->ntimestep / nevery + (transfer ? 0 : 1);
-  const bigint position = accel_auto ? (j - 1) % (every + hold) : 0;
-  const bool sealed = accel_auto && position >= every;
-  const bool sample = accel_auto && transfer &&
-      2 * (sealed ? position - every : position) >= (sealed ? hold : every);
-  if (sample) (sealed ? sealed_samples : open_samples)++;
-  const double dtw = sealed ? 0.0 : accel * nevery * update->dt;
+  const CellAccel::Cycle cycle = accel.cycle(update->ntimestep / nevery + (transfer ? 0 : 1),
+                                             transfer, offset_time(), nevery * update->dt);
+  const double dtw = cycle.sealed ? 0.0 : accel.value * nevery * update->dt;
   std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
   // exchange: per home cell psi, dpsi/dM, rate, z, M and K + P_SPH, gathered for the network
@@ -423,8 +365,10 @@ void FixCellTurgor::evaluate(bool transfer)
       max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
     if (drive.kind != CellDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
-    if (accel_pending) first_accel = std::min(first_accel, start_accel(c, conductance, slope));
-    if (sample) sample_probe(s, position, turgor, rate, conductance, sealed);
+    if (accel.pending)
+      first_accel =
+          std::min(first_accel, accel.first(conductance, slope, modulus(c), mass, offset_time()));
+    if (cycle.sample) accel.sample(s.probe, cycle, turgor, rate, conductance);
     if (junctions) {
       // advanced with the network below (doc/model.md §5.13)
       double *v = &mine_net[NETWORK_VALUES * h];
@@ -464,17 +408,7 @@ void FixCellTurgor::evaluate(bool transfer)
   max_stiffness = all_most[1];
   first_accel = -all_most[2];
   busiest = all_most[3];
-  if (accel_pending) {
-    // the first accel of auto: from the cells' state, or 'start' (doc/model.md §5.12)
-    const double first = accel_start > 0.0 ? accel_start : first_accel;
-    const double a =
-        std::isfinite(first) ? std::min(accel_max, std::max(accel_min, first)) : accel_min;
-    max_stiffness *= a / accel;
-    accel = a;
-    accel_pending = 0;
-    // the current cycle's samples were made at another accel
-    open_samples = sealed_samples = 0;
-  }
+  if (accel.pending) max_stiffness *= accel.begin(first_accel);
   if (junctions) {
     // every cell's values from its home rank, on every rank (doc/model.md §5.2): the network is
     // solved on the gathered vectors, each home rank applies its cells' change
@@ -524,7 +458,11 @@ void FixCellTurgor::evaluate(bool transfer)
   MPI_Allreduce(&moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
   water_moved += all_moved;
   if (drive.kind != CellDrive::CURVE) physical_time += dtw;
-  if (accel_auto && position == every + hold - 1) adapt_accel(every);
+  if (accel.automatic && cycle.position == cycle.every + cycle.hold - 1) {
+    std::vector<const double *> probes;
+    for (int c : home) probes.push_back(state[cells->id(c)].probe);
+    accel.adapt(cycle.every, probes, cells->ncell() > 0);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -577,87 +515,11 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<dou
 }
 
 /* ----------------------------------------------------------------------
-   accel auto: open transfers per cycle (default 20 offset times tau, at least 8) and sealed
-   transfers after them (default 5 tau, at least 4)
+   the cell's elastic modulus eps = V dP/dV: the fluid's K + P_SPH, in series with the thin
+   Neo-Hookean wall when the bond style gives G t0 (doc/model.md §6, §9.3)
 ------------------------------------------------------------------------- */
 
-bigint FixCellTurgor::accel_window() const
-{
-  if (accel_every > 0) return accel_every;
-  return std::max((bigint) 8, (bigint) lround(20.0 * offset_time() / (nevery * update->dt)));
-}
-
-bigint FixCellTurgor::accel_seal() const
-{
-  if (accel_hold > 0) return accel_hold;
-  return std::max((bigint) 4, (bigint) lround(5.0 * offset_time() / (nevery * update->dt)));
-}
-
-/* ----------------------------------------------------------------------
-   accel auto: a sample of the cell's turgor at a transfer of the second half of the open window
-   (with the rate and conductance; the last one is kept) or of the sealed window
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::sample_probe(CellState &s, bigint position, double turgor, double rate,
-                                 double conductance, bool sealed)
-{
-  double *p = s.probe;
-  if (!sealed && open_samples == 1) {
-    for (int k = 0; k < NPROBE; k++) p[k] = 0.0;
-    p[Y0] = turgor;
-  }
-  const double y = turgor - p[Y0];
-  if (sealed) {
-    p[SY2] += y;
-    p[SYY2] += y * y;
-    return;
-  }
-  const double t = (double) position;
-  p[ST] += t;
-  p[SY] += y;
-  p[STT] += t * t;
-  p[STY] += t * y;
-  p[SYY] += y * y;
-  p[RATE] = rate;
-  p[COND] = conductance;
-}
-
-/* ----------------------------------------------------------------------
-   accel auto: the cell's lag e = G (P_T - P_qs) / (dM/dt) at the end of the open window and its
-   standard error: P_T from the least-squares line through the open window's samples at the seal,
-   P_qs the mean of the sealed window's second half (doc/model.md §5.12); false without enough
-   samples or flux
-------------------------------------------------------------------------- */
-
-bool FixCellTurgor::cell_lag(const CellState &s, bigint every, double &lag, double &error) const
-{
-  const double *p = s.probe;
-  const double n = open_samples, m = sealed_samples;
-  if (n < 3 || m < 2 || p[RATE] == 0.0) return false;
-  const double dtt = p[STT] - p[ST] * p[ST] / n;
-  const double dty = p[STY] - p[ST] * p[SY] / n;
-  const double dyy = p[SYY] - p[SY] * p[SY] / n;
-  if (!(dtt > 0.0)) return false;
-  const double slope = dty / dtt, tbar = p[ST] / n, at = (double) every - tbar;
-  // P_T at the seal (t = every) on the line, variance s^2 (1/n + (t - tbar)^2 / Stt)
-  const double open = p[SY] / n + slope * at;
-  const double vopen = std::max(0.0, dyy - slope * dty) / (n - 2.0) * (1.0 / n + at * at / dtt);
-  // P_qs = the sealed mean, variance s^2 / m
-  const double sealed = p[SY2] / m;
-  const double vsealed = std::max(0.0, p[SYY2] - p[SY2] * p[SY2] / m) / ((m - 1.0) * m);
-  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value
-  lag = p[COND] * (open - sealed) / p[RATE];
-  error = p[COND] * sqrt(vopen + vsealed) / fabs(p[RATE]);
-  return std::isfinite(lag) && std::isfinite(error);
-}
-
-/* ----------------------------------------------------------------------
-   accel auto, the first accel of a cell: a = tol tau_w / tau_m with the water relaxation time
-   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the offset
-   time tau, the one mechanical time known before the run; the window then measures the lag
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::start_accel(int c, double conductance, double slope) const
+double FixCellTurgor::modulus(int c) const
 {
   const double fluid = kfluid + cells->sph_turgor(c);
   double eps = fluid;
@@ -670,55 +532,7 @@ double FixCellTurgor::start_accel(int c, double conductance, double slope) const
     // in series with the fluid: 1/eps = 1/eps_wall + 1/(K + P)
     eps = wall * fluid / (wall + fluid);
   }
-  // 1/tau_w = G (eps/M + slope), dP/dM = eps/M for a cell full of fluid
-  const double relax = conductance * (eps / cells->mass(c) + slope);
-  return relax > 0.0 ? accel_tol / (relax * offset_time()) : HUGE_VAL;
-}
-
-/* ----------------------------------------------------------------------
-   accel auto, at the end of a cycle: accel changes only when a cell's lag e is outside the
-   tolerance by more than twice its standard error (e - 2 se > tol: down to tol/e; e + 2 se < tol:
-   up to tol/(e + 2 se)), by at most x2 or /2, the most restrictive cell deciding, within
-   [min, max] (doc/model.md §5.12)
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::adapt_accel(bigint every)
-{
-  double factor = cells->ncell() > 0 ? 2.0 : 1.0;
-  bool first = true;
-  double lag = 0.0, lag_se = 0.0;
-  for (int c : cells->home_cells()) {
-    const CellState &s = state[cells->id(c)];
-    double e, se, f = 1.0;
-    if (cell_lag(s, every, e, se)) {
-      if (e - 2.0 * se > accel_tol)
-        f = std::max(0.5, accel_tol / e);
-      else if (e + 2.0 * se < accel_tol)
-        f = e + 2.0 * se > 0.0 ? std::min(2.0, accel_tol / (e + 2.0 * se)) : 2.0;
-      if (first || e > lag) {
-        lag = e;
-        lag_se = se;
-        first = false;
-      }
-    }
-    factor = std::min(factor, f);
-  }
-  // over all ranks: the most restrictive factor, the largest lag (the lowest rank's of equals)
-  double all_factor;
-  MPI_Allreduce(&factor, &all_factor, 1, MPI_DOUBLE, MPI_MIN, world);
-  factor = all_factor;
-  const double mine[3] = {first ? 0.0 : 1.0, lag, lag_se};
-  std::vector<double> lags(3 * comm->nprocs);
-  MPI_Allgather(mine, 3, MPI_DOUBLE, lags.data(), 3, MPI_DOUBLE, world);
-  first = true;
-  for (int p = 0; p < comm->nprocs; p++)
-    if (lags[3 * p] > 0.0 && (first || lags[3 * p + 1] > lag_estimate)) {
-      lag_estimate = lags[3 * p + 1];
-      lag_error = lags[3 * p + 2];
-      first = false;
-    }
-  accel = std::min(accel_max, std::max(accel_min, accel * factor));
-  open_samples = sealed_samples = 0;
+  return eps;
 }
 
 /* ----------------------------------------------------------------------
@@ -851,8 +665,8 @@ double FixCellTurgor::compute_vector(int n)
 {
   const double values[] = {water_moved,         physical_time,   (double) cells->ncell(),
                            max_imbalance,       max_stiffness,   drive.temperature,
-                           drive.mass_transfer, accel,           lag_estimate,
-                           lag_error,           water_exchanged, exchange_net,
+                           drive.mass_transfer, accel.value,     accel.lag_estimate,
+                           accel.lag_error,     water_exchanged, exchange_net,
                            exchange_stiffness,  busiest};
   return values[n];
 }
@@ -872,10 +686,10 @@ int FixCellTurgor::modify_param(int narg, char **arg)
                key);
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
   if (key == "accel") {
-    const int used = 1 + parse_accel(narg - 1, &arg[1], "Fix_modify cell/turgor");
-    if (accel_auto && drive.kind == CellDrive::CURVE)
+    const int used = 1 + accel.parse(narg - 1, &arg[1], "Fix_modify cell/turgor");
+    if (accel.automatic && drive.kind == CellDrive::CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
-    if (accel_auto && junctions)
+    if (accel.automatic && junctions)
       error->all(FLERR,
                  "Fix_modify cell/turgor: exchange does not work with accel auto: give accel a "
                  "number");
@@ -905,16 +719,10 @@ void FixCellTurgor::write_restart(FILE *fp)
   for (size_t at = 0; at < cellstate.size(); at += restart_values(RESTART_VERSION))
     order.emplace((tagint) cellstate[at], at);
   // version 1 (no marker) began with the number of cells >= 0; later versions with -version
-  std::vector<double> list = {(double) -RESTART_VERSION,
-                              (double) order.size(),
-                              physical_time,
-                              water_moved,
-                              accel_auto ? accel : 0.0,
-                              (double) open_samples,
-                              (double) sealed_samples,
-                              lag_estimate,
-                              lag_error,
-                              water_exchanged};
+  std::vector<double> list = {(double) -RESTART_VERSION, (double) order.size(), physical_time,
+                              water_moved};
+  accel.write(list);
+  list.push_back(water_exchanged);
   for (const auto &kv : order)
     list.insert(list.end(), &cellstate[kv.second],
                 &cellstate[kv.second] + restart_values(RESTART_VERSION));
@@ -941,15 +749,7 @@ void FixCellTurgor::restart(char *buf)
   physical_time = list[1];
   water_moved = list[2];
   // accel auto continues from the adapted accel and its window when the file has them (4)
-  const bool adapted = version >= 4 && list[3] > 0.0 && accel_auto;
-  if (adapted) {
-    accel = std::min(accel_max, std::max(accel_min, list[3]));
-    accel_pending = 0;
-    open_samples = (int) list[4];
-    sealed_samples = (int) list[5];
-    lag_estimate = list[6];
-    lag_error = list[7];
-  }
+  const bool adapted = version >= 4 && accel.read(&list[3]);
   if (version >= 5) water_exchanged = list[8];
   state.clear();
   bool other_pi0 = false, other_solids = false;
@@ -965,7 +765,7 @@ void FixCellTurgor::restart(char *buf)
     // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
     const double solids = version >= 3 ? v[5] : 0.0;
     CellState cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
-    if (adapted) std::copy(v + 6, v + 6 + NPROBE, cell.probe);
+    if (adapted) std::copy(v + 6, v + 6 + CellAccel::NPROBE, cell.probe);
     // every rank holds every cell until init() keeps its home cells
     state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;
@@ -1013,7 +813,7 @@ void FixCellTurgor::pack_state(std::vector<double> &list, bool full) const
     const CellState &s = kv.second;
     list.insert(list.end(),
                 {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
-    list.insert(list.end(), s.probe, s.probe + NPROBE);
+    list.insert(list.end(), s.probe, s.probe + CellAccel::NPROBE);
     if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
   }
 }
@@ -1021,11 +821,11 @@ void FixCellTurgor::pack_state(std::vector<double> &list, bool full) const
 void FixCellTurgor::unpack_state(const double *v, bool full, CellState &s) const
 {
   s = CellState{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
-  std::copy(v + 6, v + 6 + NPROBE, s.probe);
+  std::copy(v + 6, v + 6 + CellAccel::NPROBE, s.probe);
   if (!full) return;
-  s.turgor = v[6 + NPROBE];
-  s.psi_surface = v[7 + NPROBE];
-  s.rate = v[8 + NPROBE];
+  s.turgor = v[6 + CellAccel::NPROBE];
+  s.psi_surface = v[7 + CellAccel::NPROBE];
+  s.rate = v[8 + CellAccel::NPROBE];
 }
 
 /* ----------------------------------------------------------------------

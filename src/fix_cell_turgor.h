@@ -7,6 +7,7 @@
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
+#include "cell_accel.h"
 #include "cell_drive.h"
 #include "cell_network.h"
 #include "cell_osmotic.h"
@@ -64,14 +65,10 @@ class FixCellTurgor : public Fix {
     double solids;               // dry solids S (kg), 0 without 'solids'
     double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
     double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
-    double probe[10];            // accel auto: the cycle's sums (enum Probe)
+    double probe[CellAccel::NPROBE];    // accel auto: the cycle's sums
   };
-  // accel auto, per cell: P_T shifted by its first sample, sums over the open window's samples
-  // (t = position, y = P_T), the rate and conductance of its last transfer, sums over the sealed
-  // window's samples
-  enum Probe { Y0, ST, SY, STT, STY, SYY, RATE, COND, SY2, SYY2, NPROBE };
-
-  double lp, pi0, rhow, accel;
+  double lp, pi0, rhow;
+  CellAccel accel;              // accel, fixed or auto
   double ea;                    // activation energy of L_P (J/mol)
   CellOsmotic osmotic_model;    // pi(T, M): solutes, dry solids, GAB; Tref
   CellDrive drive;              // T and psi_ext, air or a curve: each cell's flux
@@ -101,27 +98,13 @@ class FixCellTurgor : public Fix {
   double exchange_net;          // sum over cells of the exchange's mass change, last transfer (kg)
   double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
 
-  // accel auto: tolerance, floor, ceiling, start (0: from the cell's state), transfers per
-  // adaptation; pending: accel still to be set from the cells' state at the next evaluation
-  int accel_auto, accel_every, accel_hold, accel_pending;
-  int open_samples, sealed_samples;    // of the current cycle
-  double accel_tol, accel_min, accel_max, accel_start;
-  double lag_estimate, lag_error;    // of the last adaptation window
-
   void evaluate(bool transfer);
   void pack_state(std::vector<double> &list, bool full) const;
   void unpack_state(const double *v, bool full, CellState &cell) const;
   void gather_state(bool everywhere, std::vector<double> &list) const;
   void exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid, bool transfer,
                 double dtw, double factor, std::vector<double> &dmass);
-  int parse_accel(int narg, char **arg, const std::string &command);
-  double start_accel(int c, double conductance, double slope) const;
-  bigint accel_window() const;
-  bigint accel_seal() const;
-  void sample_probe(CellState &s, bigint position, double turgor, double rate, double conductance,
-                    bool sealed);
-  bool cell_lag(const CellState &s, bigint every, double &lag, double &error) const;
-  void adapt_accel(bigint every);
+  double modulus(int c) const;
   double offset_time() const;
   bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellState &s, bool advance);
