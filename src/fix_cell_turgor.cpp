@@ -39,13 +39,6 @@ using MathConst::MY_PI;
 // -version; 1: none
 static const int RESTART_VERSION = 5;
 
-// restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3), the
-// accel auto cycle's sums (4: CellAccel::NPROBE = 10 values)
-static int restart_values(int version)
-{
-  return version >= 4 ? 16 : (version >= 3 ? 6 : 5);
-}
-
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
 // between cells (5)
@@ -53,9 +46,6 @@ static int restart_globals(int version)
 {
   return version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
-
-// a cell's state moved between ranks at init: its restart values, turgor, psi_surface, rate
-static const int STATE_VALUES = 19;
 
 // exchange: what the network needs of each cell: psi, dpsi/dM, rate, z, M, K + P_SPH
 static const int NETWORK_VALUES = 6;
@@ -65,9 +55,9 @@ static const int NETWORK_VALUES = 6;
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(lmp), ea(0.0),
     osmotic_model(lmp, "Fix cell/turgor"), drive(lmp, "Fix cell/turgor"), tau(0.0), bulk(0.0),
-    kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), physical_time(0.0),
-    water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1},
-    water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0)
+    kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), state(lmp),
+    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0),
+    busiest(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -227,20 +217,10 @@ void FixCellTurgor::init()
   // every cell's state from where it was (the last run's home ranks, or the restart file on every
   // rank) to the cell's home rank of this run; cells no longer in the group stay on rank 0
   std::vector<double> list;
-  gather_state(true, list);
+  state.gather(true, list);
   cells->find_cells();
   cells->init();
-  const CellRegistry &reg = cells->registry();
-  state.clear();
-  for (size_t at = 0; at < list.size(); at += STATE_VALUES) {
-    const int c = reg.index((tagint) list[at]);
-    if (c >= 0 ? reg.home(c) == comm->me : comm->me == 0)
-      unpack_state(&list[at], true, state[(tagint) list[at]]);
-  }
-  for (int c : reg.home_cells())
-    if (state.find(cells->id(c)) == state.end()) {
-      state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
-    }
+  state.keep_home(list, cells->registry(), pi0);
   drive.init();
   lcc.resolve(lmp, "Fix cell/turgor: variable");
   if (junctions) junctions->init();
@@ -327,7 +307,7 @@ void FixCellTurgor::evaluate(bool transfer)
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
     const double area = cells->area(c);
-    CellState &s = state[id];
+    CellTurgorState::Cell &s = state[id];
     const double turgor = flux_turgor(c, s, transfer);
     if (cells->get(c, CellReduce::NFLUID) == 0.0) {
       failure = Failure{c,
@@ -552,7 +532,7 @@ double FixCellTurgor::offset_time() const
    transfer steps only, so a run split in two continues as one
 ------------------------------------------------------------------------- */
 
-double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
+double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
 {
   const double psph = cells->sph_turgor(c);
   s.turgor = psph;
@@ -570,7 +550,8 @@ double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
    turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
-bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, double demand)
+bool FixCellTurgor::check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi,
+                                double demand)
 {
   const double gt = cells->mean_gt0(c);
   const double area0 = cells->ref_area(c);
@@ -612,9 +593,9 @@ bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, d
 
 bool FixCellTurgor::turgor(tagint cell, double &pt) const
 {
-  auto it = state.find(cell);
-  if (it == state.end()) return false;
-  pt = it->second.turgor;
+  const CellTurgorState::Cell *s = state.find(cell);
+  if (!s) return false;
+  pt = s->turgor;
   return true;
 }
 
@@ -625,10 +606,9 @@ bool FixCellTurgor::turgor(tagint cell, double &pt) const
 
 bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 {
-  auto it = state.find(cell);
-  if (it == state.end()) return false;
-  const CellState &s = it->second;
-  pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass,
+  const CellTurgorState::Cell *s = state.find(cell);
+  if (!s) return false;
+  pi = osmotic_model.pressure(s->pi0, s->mass0, s->solids, mass,
                               drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref,
                               nullptr);
   return true;
@@ -641,14 +621,13 @@ bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 
 bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 {
-  auto it = state.find(cell);
-  if (it == state.end()) return false;
-  const CellState &s = it->second;
-  w.moisture = s.solids > 0.0 ? mass / s.solids : 0.0;
-  w.relative = s.mass0 > 0.0 ? mass / s.mass0 : 0.0;
+  const CellTurgorState::Cell *s = state.find(cell);
+  if (!s) return false;
+  w.moisture = s->solids > 0.0 ? mass / s->solids : 0.0;
+  w.relative = s->mass0 > 0.0 ? mass / s->mass0 : 0.0;
   w.temperature = drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref;
-  w.psi_surface = s.psi_surface;
-  w.rate = s.rate;
+  w.psi_surface = s->psi_surface;
+  w.rate = s->rate;
   return true;
 }
 
@@ -710,22 +689,15 @@ int FixCellTurgor::modify_param(int narg, char **arg)
 
 void FixCellTurgor::write_restart(FILE *fp)
 {
-  // every cell's state from its home rank, in ascending ID (a cell's copies on every rank when no
-  // run followed read_restart: the first)
   std::vector<double> cellstate;
-  gather_state(false, cellstate);
+  const int ncell = state.gather_restart(RESTART_VERSION, cellstate);
   if (comm->me != 0) return;
-  std::map<tagint, size_t> order;
-  for (size_t at = 0; at < cellstate.size(); at += restart_values(RESTART_VERSION))
-    order.emplace((tagint) cellstate[at], at);
   // version 1 (no marker) began with the number of cells >= 0; later versions with -version
-  std::vector<double> list = {(double) -RESTART_VERSION, (double) order.size(), physical_time,
+  std::vector<double> list = {(double) -RESTART_VERSION, (double) ncell, physical_time,
                               water_moved};
   accel.write(list);
   list.push_back(water_exchanged);
-  for (const auto &kv : order)
-    list.insert(list.end(), &cellstate[kv.second],
-                &cellstate[kv.second] + restart_values(RESTART_VERSION));
+  list.insert(list.end(), cellstate.begin(), cellstate.end());
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -753,7 +725,7 @@ void FixCellTurgor::restart(char *buf)
   if (version >= 5) water_exchanged = list[8];
   state.clear();
   bool other_pi0 = false, other_solids = false;
-  const int nvalues = restart_values(version);
+  const int nvalues = CellTurgorState::restart_values(version);
   for (int k = 0; k < n; k++) {
     const double *v = &list[1 + restart_globals(version) + nvalues * k];
     // version 1 files written before the offset was stored had 4 values per cell: caught here
@@ -764,7 +736,7 @@ void FixCellTurgor::restart(char *buf)
                  version, k + 1, n, v[0], v[3]);
     // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
     const double solids = version >= 3 ? v[5] : 0.0;
-    CellState cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
+    CellTurgorState::Cell cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
     if (adapted) std::copy(v + 6, v + 6 + CellAccel::NPROBE, cell.probe);
     // every rank holds every cell until init() keeps its home cells
     state[(tagint) v[0]] = cell;
@@ -799,57 +771,6 @@ int FixCellTurgor::pack_forward_comm(int n, int *list, double *buf, int, int *)
 void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
 {
   for (int k = 0; k < n; k++) atom->rmass[first + k] = buf[k];
-}
-
-/* ----------------------------------------------------------------------
-   this rank's cell states, restart_values(RESTART_VERSION) each: ID, mass0, pi0, warned, offset,
-   solids, the accel auto sums; full: + the last evaluation's turgor, psi_surface and rate
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::pack_state(std::vector<double> &list, bool full) const
-{
-  list.clear();
-  for (const auto &kv : state) {
-    const CellState &s = kv.second;
-    list.insert(list.end(),
-                {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
-    list.insert(list.end(), s.probe, s.probe + CellAccel::NPROBE);
-    if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
-  }
-}
-
-void FixCellTurgor::unpack_state(const double *v, bool full, CellState &s) const
-{
-  s = CellState{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
-  std::copy(v + 6, v + 6 + CellAccel::NPROBE, s.probe);
-  if (!full) return;
-  s.turgor = v[6 + CellAccel::NPROBE];
-  s.psi_surface = v[7 + CellAccel::NPROBE];
-  s.rate = v[8 + CellAccel::NPROBE];
-}
-
-/* ----------------------------------------------------------------------
-   every rank's cell states (full with everywhere) on every rank, or on rank 0 only
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::gather_state(bool everywhere, std::vector<double> &list) const
-{
-  std::vector<double> mine;
-  pack_state(mine, everywhere);
-  const int n = (int) mine.size(), nprocs = comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  if (everywhere)
-    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  else
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  list.resize(everywhere || comm->me == 0 ? displs.back() + counts.back() : 0);
-  if (everywhere)
-    MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, list.data(), counts.data(), displs.data(),
-                   MPI_DOUBLE, world);
-  else
-    MPI_Gatherv(mine.data(), n, MPI_DOUBLE, list.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                0, world);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -12,6 +12,7 @@
 #include "cell_network.h"
 #include "cell_osmotic.h"
 #include "cell_quantity.h"
+#include "cell_turgor_state.h"
 #include "fix.h"
 
 #include <map>
@@ -57,16 +58,6 @@ class FixCellTurgor : public Fix {
 
  protected:
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
-  struct CellState {
-    double mass0;                // fluid mass when the fix first saw the cell (kg)
-    double pi0;                  // osmotic pressure at mass0 and Tref (Pa)
-    int warned;                  // 1 once the limit-point warning was printed
-    double offset;               // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
-    double solids;               // dry solids S (kg), 0 without 'solids'
-    double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
-    double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
-    double probe[CellAccel::NPROBE];    // accel auto: the cycle's sums
-  };
   double lp, pi0, rhow;
   CellAccel accel;              // accel, fixed or auto
   double ea;                    // activation energy of L_P (J/mol)
@@ -77,8 +68,8 @@ class FixCellTurgor : public Fix {
   double kfluid;    // K in use
   int limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
-  std::map<tagint, CellState> state;    // the home cells' (and on rank 0 unknown cells') state
-  std::vector<double> gt0;              // G t0 per bond type from the bond style, empty without it
+  CellTurgorState state;      // per cell, on its home rank
+  std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
   double busiest;    // the most cells one rank summed at the last evaluation
@@ -99,15 +90,12 @@ class FixCellTurgor : public Fix {
   double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
 
   void evaluate(bool transfer);
-  void pack_state(std::vector<double> &list, bool full) const;
-  void unpack_state(const double *v, bool full, CellState &cell) const;
-  void gather_state(bool everywhere, std::vector<double> &list) const;
   void exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid, bool transfer,
                 double dtw, double factor, std::vector<double> &dmass);
   double modulus(int c) const;
   double offset_time() const;
-  bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
-  double flux_turgor(int c, CellState &s, bool advance);
+  bool check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi, double demand);
+  double flux_turgor(int c, CellTurgorState::Cell &s, bool advance);
   double pair_bulk_modulus();
 };
 
