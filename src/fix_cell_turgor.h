@@ -15,7 +15,6 @@
 #include "cell_turgor_state.h"
 #include "fix.h"
 
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
