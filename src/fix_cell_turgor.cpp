@@ -10,6 +10,7 @@
 
 #include "atom.h"
 #include "bond.h"
+#include "cell_args.h"
 #include "cell_compat.h"
 #include "cell_junctions.h"
 #include "cell_params.h"
@@ -38,13 +39,6 @@ using MathConst::MY_PI;
 // -version; 1: none
 static const int RESTART_VERSION = 5;
 
-// restart values per cell: ID, mass0, pi0, warned, offset (versions 1, 2), solids (3), the
-// accel auto cycle's sums (4: NPROBE = 10 values)
-static int restart_values(int version)
-{
-  return version >= 4 ? 16 : (version >= 3 ? 6 : 5);
-}
-
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
 // between cells (5)
@@ -53,26 +47,17 @@ static int restart_globals(int version)
   return version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
 
-// a cell's state moved between ranks at init: its restart values, turgor, psi_surface, rate
-static const int STATE_VALUES = 19;
-
 // exchange: what the network needs of each cell: psi, dpsi/dM, rate, z, M, K + P_SPH
 static const int NETWORK_VALUES = 6;
 
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(1.0),
-    drive(DRIVE_PSI), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
-    air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
-    air_flow(0), area_fraction(1.0), surface_group(-1), mass_transfer(0.0), ea(0.0), tref(298.15),
-    solids_fraction(0.0), isotherm(0), gab_xm(0.0), gab_c(0.0), gab_k(0.0), temperature(0.0),
-    tau(0.0), bulk(0.0), kfluid(0.0), osmotic_law(FIXED), limit(LIMIT_ERROR), limit_set(0),
-    fluidtype(1), walltype(2), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
-    max_stiffness(0.0), busiest(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
-    exchange_stiffness(0.0), accel_auto(0), accel_every(0), accel_hold(0), accel_pending(0),
-    open_samples(0), sealed_samples(0), accel_tol(0.0), accel_min(1.0), accel_max(HUGE_VAL),
-    accel_start(0.0), lag_estimate(0.0), lag_error(0.0)
+    Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(lmp), ea(0.0),
+    osmotic_model(lmp, "Fix cell/turgor"), drive(lmp, "Fix cell/turgor"), tau(0.0), bulk(0.0),
+    kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), state(lmp),
+    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0),
+    busiest(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -81,13 +66,12 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
 
-  bool lp_set = false, pi0_set = false, temp_set = false;
+  bool lp_set = false, pi0_set = false;
   int bondtype = 0;
   std::string areas;         // 'exchange ... areas FILE'
   bool lcc_file = false;     // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
   double file_lcc = -1.0;    // turgor_Lcc of the last 'file', -1 if none
-  std::string measure = "wall", drives;
-  int ndrive = 0;
+  std::string measure = "wall";
   int iarg = 4;
   // the values after keyword key: n of them, or stop
   auto values = [&](const std::string &key, int n) {
@@ -105,89 +89,12 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     } else if (key == "pi0") {
       pi0 = utils::numeric(FLERR, value, false, lmp);
       pi0_set = true;
-    } else if (key == "psi") {
-      parse_quantity(psi, value);
-      drives += " psi";
-      ndrive++;
-    } else if (key == "air") {
-      char **v = values(key, 3);
-      parse_quantity(air_t, v[0]);
-      parse_quantity(air_rh, v[1]);
-      used = 4;
-      air_flow = strcmp(v[2], "flow") == 0;
-      if (air_flow) {
-        v = values(key, 5);
-        parse_quantity(air_speed, v[3]);
-        parse_quantity(air_length, v[4]);
-        used = 6;
-      } else {
-        parse_quantity(air_hm, v[2]);
-      }
-      // numbers are checked now, variables at every transfer (placeholders pass the check)
-      const double t0 = air_t.name.empty() ? air_t.value : tref;
-      check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0,
-                air_hm.name.empty() ? air_hm.value : 0.0);
-      if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
-        flow_transfer(t0, air_speed.value, air_length.value);
-      // optional 'area f' and 'surface group-ID', in either order
-      while (iarg + used + 1 < narg) {
-        const char *word = arg[iarg + used], *next = arg[iarg + used + 1];
-        if (strcmp(word, "area") == 0) {
-          area_fraction = utils::numeric(FLERR, next, false, lmp);
-          if (!(area_fraction > 0.0 && area_fraction <= 1.0))
-            error->all(FLERR, "Fix cell/turgor: air area fraction = {} must be in (0, 1]",
-                       area_fraction);
-        } else if (strcmp(word, "surface") == 0) {
-          surface_group = group->find(next);
-          if (surface_group < 0)
-            error->all(FLERR, "Fix cell/turgor: air surface group {} does not exist", next);
-        } else
-          break;
-        used += 2;
-      }
-      drive = DRIVE_AIR;
-      drives += " air";
-      ndrive++;
-    } else if (key == "curve") {
-      parse_quantity(curve, value);
-      if (curve.name.empty())
-        error->all(FLERR, "Fix cell/turgor: curve = {} must be an equal-style variable v_name",
-                   value);
-      drive = DRIVE_CURVE;
-      drives += " curve";
-      ndrive++;
-    } else if (key == "temp") {
-      parse_quantity(temp, value);
-      if (temp.name.empty() && !(temp.value > 0.0))
-        error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0", temp.value);
-      temp_set = true;
+    } else if (int n = drive.parse(narg - iarg, &arg[iarg], osmotic_model.tref)) {
+      used = n;
     } else if (key == "Ea") {
       ea = utils::numeric(FLERR, value, false, lmp);
       if (ea < 0.0)
         error->all(FLERR, "Fix cell/turgor: activation energy Ea = {} must be >= 0", ea);
-    } else if (key == "Tref") {
-      tref = utils::numeric(FLERR, value, false, lmp);
-      if (!(tref > 0.0))
-        error->all(FLERR, "Fix cell/turgor: reference temperature Tref = {} K must be > 0", tref);
-    } else if (key == "solids") {
-      solids_fraction = utils::numeric(FLERR, value, false, lmp);
-      if (!(solids_fraction > 0.0 && solids_fraction < 1.0))
-        error->all(FLERR,
-                   "Fix cell/turgor: solids = {} must be in (0, 1) (wet-basis mass fraction)",
-                   solids_fraction);
-    } else if (key == "isotherm") {
-      if (strcmp(value, "none") == 0) {
-        isotherm = 0;
-      } else if (strcmp(value, "gab") == 0) {
-        char **v = values(key, 4);
-        gab_xm = utils::numeric(FLERR, v[1], false, lmp);
-        gab_c = utils::numeric(FLERR, v[2], false, lmp);
-        gab_k = utils::numeric(FLERR, v[3], false, lmp);
-        isotherm = 1;
-        used = 5;
-      } else {
-        error->all(FLERR, "Fix cell/turgor: unknown isotherm '{}' (expected gab or none)", value);
-      }
     } else if (key == "rhow") {
       rhow = utils::numeric(FLERR, value, false, lmp);
       if (rhow <= 0.0)
@@ -199,7 +106,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                    "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
                    v[0], v[1]);
       lcc_file = strcmp(v[0], "file") == 0;
-      if (!lcc_file) parse_quantity(lcc, v[0]);
+      if (!lcc_file) lcc = CellArgs::quantity(lmp, v[0]);
       if (!lcc_file && !lcc.is_variable() && lcc.value < 0.0)
         error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0",
                    lcc.value);
@@ -210,18 +117,10 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
         used = 6;
       }
     } else if (key == "accel") {
-      used = 1 + parse_accel(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
+      used = 1 + accel.parse(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
     } else if (key == "bulk") {
       bulk = utils::numeric(FLERR, value, false, lmp);
       if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
-    } else if (key == "osmotic") {
-      if (strcmp(value, "fixed") == 0)
-        osmotic_law = FIXED;
-      else if (strcmp(value, "vanthoff") == 0)
-        osmotic_law = VANTHOFF;
-      else
-        error->all(FLERR, "Fix cell/turgor: unknown osmotic law '{}' (expected fixed or vanthoff)",
-                   value);
     } else if (key == "limit") {
       if (strcmp(value, "error") == 0)
         limit = LIMIT_ERROR;
@@ -231,6 +130,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix cell/turgor: unknown limit action '{}' (expected error or warn)",
                    value);
       limit_set = 1;
+    } else if (int n = osmotic_model.parse(narg - iarg, &arg[iarg])) {
+      used = n;
     } else if (key == "file") {
       CellParams params(lmp, value, "Fix cell/turgor");
       lp = params.nonnegative("turgor_LP");
@@ -239,18 +140,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       // optional drying keys (doc/fix_cell_turgor.md)
       if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea");
       if (params.has("turgor_Lcc")) file_lcc = params.nonnegative("turgor_Lcc");
-      if (params.has("turgor_solids")) solids_fraction = params.positive("turgor_solids");
-      if (params.has("turgor_gab_Xm") || params.has("turgor_gab_C") || params.has("turgor_gab_K")) {
-        gab_xm = params.number("turgor_gab_Xm");
-        gab_c = params.number("turgor_gab_C");
-        gab_k = params.number("turgor_gab_K");
-        isotherm = 1;
-      }
-      if (!(solids_fraction < 1.0))
-        error->all(FLERR,
-                   "Fix cell/turgor: {}: turgor_solids = {} must be in (0, 1) (wet-basis mass "
-                   "fraction)",
-                   value, solids_fraction);
+      osmotic_model.read(params, value);
     } else if (key == "turgor") {
       measure = value;
     } else if (key == "tau") {
@@ -269,20 +159,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (lp < 0.0) error->all(FLERR, "Fix cell/turgor: wall permeability LP = {} must be >= 0", lp);
   if (!pi0_set) error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
-  if (ndrive > 1)
-    error->all(FLERR, "Fix cell/turgor: give one drive of psi, air and curve, not{}", drives);
-  if (isotherm && solids_fraction == 0.0)
-    error->all(FLERR,
-               "Fix cell/turgor: the sorption isotherm needs the moisture content X: give the dry "
-               "solids with 'solids w_s'");
-  if (isotherm && !(gab_xm > 0.0 && gab_c > 0.0 && gab_k > 0.0 && gab_k <= 1.0))
-    error->all(FLERR,
-               "Fix cell/turgor: GAB isotherm Xm = {}, C = {}, K = {} is impossible: needs Xm > 0, "
-               "C > 0 and 0 < K <= 1 (K > 1 diverges below a_w = 1)",
-               gab_xm, gab_c, gab_k);
-  // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
-  if (!temp_set) temp = drive == DRIVE_AIR ? air_t : CellQuantity{tref, "", -1};
-  if (accel_auto && drive == DRIVE_CURVE)
+  drive.check(osmotic_model.tref);
+  osmotic_model.check();
+  if (accel.automatic && drive.kind == CellDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
                "flux that the mechanics could delay)");
@@ -294,17 +173,17 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                  "parameter file: give 'file name' with that key");
     lcc = CellQuantity{file_lcc, "", -1};
   }
-  if (bondtype && drive == DRIVE_CURVE)
+  if (bondtype && drive.kind == CellDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
                "cell's water)");
-  if (bondtype && accel_auto)
+  if (bondtype && accel.automatic)
     error->all(FLERR,
                "Fix cell/turgor: exchange does not work with accel auto: give accel a number");
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
-  if (surface_group >= 0) cells->set_surface(group->bitmask[surface_group]);
+  if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
   if (bondtype) {
     junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
     network = std::make_unique<CellNetwork>();
@@ -316,110 +195,6 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   restart_global = 1;
   comm_forward = 1;
-}
-
-/* ----------------------------------------------------------------------
-   the values after 'accel': a number, or auto tol [min a] [max a] [start a] [every n] [hold n]
-   (doc/model.md §5.12); returns how many it used
-------------------------------------------------------------------------- */
-
-int FixCellTurgor::parse_accel(int narg, char **arg, const std::string &command)
-{
-  if (narg < 1) error->all(FLERR, "{}: missing value after 'accel'", command);
-  if (strcmp(arg[0], "auto") != 0) {
-    const double value = utils::numeric(FLERR, arg[0], false, lmp);
-    if (value <= 0.0) error->all(FLERR, "{}: accel = {} must be > 0", command, value);
-    accel = value;
-    accel_auto = accel_pending = 0;
-    return 1;
-  }
-  if (narg < 2) error->all(FLERR, "{}: missing tolerance after 'accel auto'", command);
-  const double tol = utils::numeric(FLERR, arg[1], false, lmp);
-  if (!(tol > 0.0 && tol < 1.0))
-    error->all(FLERR, "{}: accel auto tolerance = {} must be in (0, 1)", command, tol);
-  double lo = 1.0, hi = HUGE_VAL, start = 0.0;
-  int every = 0, hold = 0, used = 2;
-  while (used + 1 < narg) {
-    const std::string key = arg[used];
-    if (key != "min" && key != "max" && key != "start" && key != "every" && key != "hold") break;
-    if (key == "every" || key == "hold") {
-      const int value = utils::inumeric(FLERR, arg[used + 1], false, lmp);
-      if (value < 4)
-        error->all(FLERR, "{}: accel auto {} = {} must be >= 4 transfers", command, key, value);
-      (key == "every" ? every : hold) = value;
-    } else {
-      const double value = utils::numeric(FLERR, arg[used + 1], false, lmp);
-      if (!(value > 0.0))
-        error->all(FLERR, "{}: accel auto {} = {} must be > 0", command, key, value);
-      (key == "min" ? lo : key == "max" ? hi : start) = value;
-    }
-    used += 2;
-  }
-  if (lo > hi) error->all(FLERR, "{}: accel auto min = {} must be <= max = {}", command, lo, hi);
-  if (start > 0.0 && (start < lo || start > hi))
-    error->all(FLERR, "{}: accel auto start = {} must be in [min, max] = [{}, {}]", command, start,
-               lo, hi);
-  accel_auto = accel_pending = 1;
-  accel_tol = tol;
-  accel_min = lo;
-  accel_max = hi;
-  accel_start = start;
-  accel_every = every;
-  accel_hold = hold;
-  return used;
-}
-
-/* ----------------------------------------------------------------------
-   a number or v_name; variables are looked up in init() (they may be defined after the fix)
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::parse_quantity(CellQuantity &in, const char *arg)
-{
-  if (strncmp(arg, "v_", 2) == 0)
-    in = CellQuantity{0.0, arg + 2, -1};
-  else
-    in = CellQuantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
-}
-
-/* ----------------------------------------------------------------------
-   h_m of air at T flowing at U >= 0 along a sample of length L > 0: laminar flat plate,
-   Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::flow_transfer(double t, double u, double l)
-{
-  if (!(u >= 0.0)) error->all(FLERR, "Fix cell/turgor: air speed U = {} m/s must be >= 0", u);
-  if (!(l > 0.0)) error->all(FLERR, "Fix cell/turgor: sample length L = {} m must be > 0", l);
-  if (!(t > 250.0 && t < 450.0))
-    error->all(FLERR,
-               "Fix cell/turgor: air temperature T = {} K is outside 250-450 K, the range of the "
-               "vapour diffusivity in air behind 'flow' (give h_m instead)",
-               t);
-  const double re = CellWater::reynolds(t, u, l);
-  if (!(re < 5e5))
-    error->all(FLERR,
-               "Fix cell/turgor: air flow U = {} m/s along L = {} m has Re = {:.4g}, beyond the "
-               "laminar flat-plate correlation (Re < 5e5): give h_m instead",
-               u, l, re);
-  return CellWater::plate_transfer(t, u, l);
-}
-
-/* ----------------------------------------------------------------------
-   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, h_m >= 0
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::check_air(double t, double rh, double hm)
-{
-  if (!(t > 0.0)) error->all(FLERR, "Fix cell/turgor: air temperature T = {} K must be > 0", t);
-  if (!(t < CellWater::CRITICAL_T))
-    error->all(FLERR,
-               "Fix cell/turgor: air temperature T = {} K must be below the critical point of "
-               "water, {} K",
-               t, CellWater::CRITICAL_T);
-  if (!(rh > 0.0 && rh <= 1.0))
-    error->all(FLERR, "Fix cell/turgor: relative humidity RH = {} must be in (0, 1]", rh);
-  if (!(hm >= 0.0))
-    error->all(FLERR, "Fix cell/turgor: mass-transfer coefficient hm = {} m/s must be >= 0", hm);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -442,23 +217,12 @@ void FixCellTurgor::init()
   // every cell's state from where it was (the last run's home ranks, or the restart file on every
   // rank) to the cell's home rank of this run; cells no longer in the group stay on rank 0
   std::vector<double> list;
-  gather_state(true, list);
+  state.gather(true, list);
   cells->find_cells();
   cells->init();
-  const CellRegistry &reg = cells->registry();
-  state.clear();
-  for (size_t at = 0; at < list.size(); at += STATE_VALUES) {
-    const int c = reg.index((tagint) list[at]);
-    if (c >= 0 ? reg.home(c) == comm->me : comm->me == 0)
-      unpack_state(&list[at], true, state[(tagint) list[at]]);
-  }
-  for (int c : reg.home_cells())
-    if (state.find(cells->id(c)) == state.end()) {
-      state[cells->id(c)] = CellState{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
-    }
-  for (CellQuantity *in :
-       {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length, &lcc})
-    in->resolve(lmp, "Fix cell/turgor: variable");
+  state.keep_home(list, cells->registry(), pi0);
+  drive.init();
+  lcc.resolve(lmp, "Fix cell/turgor: variable");
   if (junctions) junctions->init();
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
@@ -518,14 +282,9 @@ void FixCellTurgor::evaluate(bool transfer)
   // accel auto: transfer j (at step j N; the next one when not transferring) is at position
   // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
   // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
-  const bigint every = accel_window(), hold = accel_seal();
-  const bigint j = update->ntimestep / nevery + (transfer ? 0 : 1);
-  const bigint position = accel_auto ? (j - 1) % (every + hold) : 0;
-  const bool sealed = accel_auto && position >= every;
-  const bool sample = accel_auto && transfer &&
-      2 * (sealed ? position - every : position) >= (sealed ? hold : every);
-  if (sample) (sealed ? sealed_samples : open_samples)++;
-  const double dtw = sealed ? 0.0 : accel * nevery * update->dt;
+  const CellAccel::Cycle cycle = accel.cycle(update->ntimestep / nevery + (transfer ? 0 : 1),
+                                             transfer, offset_time(), nevery * update->dt);
+  const double dtw = cycle.sealed ? 0.0 : accel.value * nevery * update->dt;
   std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
   // exchange: per home cell psi, dpsi/dM, rate, z, M and K + P_SPH, gathered for the network
@@ -534,40 +293,13 @@ void FixCellTurgor::evaluate(bool transfer)
   failure = Failure{cells->ncell(), ""};
   warnings.clear();
 
-  // the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
-  // X/X0(t) is evaluated at its end
-  const double t = temp.get(lmp);
-  if (!(t > 0.0))
-    error->all(FLERR, "Fix cell/turgor: temperature T = {} K must be > 0 (step {})", t,
-               update->ntimestep);
-  temperature = t;
+  // T and the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
+  // X/X0(t) at its end
+  drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
+  const double t = drive.temperature, psi_ext = drive.psi_ext;
   // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
-  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, tref) : 1.0;
+  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
   const double lpt = lp * arrhenius;
-  double psi_ext = 0.0, hm = 0.0, rho_sat = 0.0, rho_air = 0.0, target = 0.0;
-  if (drive == DRIVE_PSI) {
-    psi_ext = psi.get(lmp);
-  } else if (drive == DRIVE_AIR) {
-    const double tair = air_t.get(lmp), rh = air_rh.get(lmp);
-    hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
-    mass_transfer = hm;
-    check_air(tair, rh, hm);
-    if (!(t < CellWater::CRITICAL_T))
-      error->all(FLERR,
-                 "Fix cell/turgor: temperature T = {} K must be below the critical point of water, "
-                 "{} K",
-                 t, CellWater::CRITICAL_T);
-    rho_sat = CellWater::saturation_density(t);
-    rho_air = rh * CellWater::saturation_density(tair);
-    // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
-    psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
-  } else {
-    if (transfer) physical_time += dtw;
-    target = curve.get(lmp);
-    if (!(target > 0.0))
-      error->all(FLERR, "Fix cell/turgor: curve X/X0 = {} must be > 0 (physical time {} s)", target,
-                 physical_time);
-  }
 
   for (int h = 0; h < (int) home.size(); h++) {
     const int c = home[h];
@@ -575,7 +307,7 @@ void FixCellTurgor::evaluate(bool transfer)
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
     const double area = cells->area(c);
-    CellState &s = state[id];
+    CellTurgorState::Cell &s = state[id];
     const double turgor = flux_turgor(c, s, transfer);
     if (cells->get(c, CellReduce::NFLUID) == 0.0) {
       failure = Failure{c,
@@ -595,40 +327,28 @@ void FixCellTurgor::evaluate(bool transfer)
 
     if (s.mass0 == 0.0) s.mass0 = mass;
     // dry solids S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water
-    if (s.solids == 0.0 && solids_fraction > 0.0)
-      s.solids = s.mass0 * solids_fraction / (1.0 - solids_fraction);
+    if (s.solids == 0.0) s.solids = osmotic_model.solids(s.mass0);
     double slope;
-    const double pi = osmotic_pressure(s, mass, t, &slope);
+    const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, &slope);
     // psi_cell = P_T - pi (doc/model.md §5.1)
     const double psi_cell = turgor - pi;
-    double conductance, rate;
-    if (drive == DRIVE_AIR) {
-      // wall and air film in series on the exposed area f A, or f A_surface (doc/model.md §5.8)
-      const double exposed = area_fraction * (surface_group >= 0 ? cells->surface_area(c) : area);
-      const auto air = CellWater::air_flux(psi_cell, t, rhow * lpt, hm, rho_sat, rho_air);
-      conductance = exposed * air.conductance;
-      rate = -exposed * air.flux;
-      s.psi_surface = air.psi_surface;
-    } else if (drive == DRIVE_PSI) {
-      // dM/dt = rho_w L_P A (psi_ext - psi_cell) (doc/model.md §5.1)
-      conductance = rhow * lpt * area;
-      rate = conductance * (psi_ext - psi_cell);
-      s.psi_surface = psi_ext;
-    } else {
-      conductance = 0.0;
-      rate = (target * s.mass0 - mass) / dtw;
-      s.psi_surface = psi_cell;
-    }
+    const CellDrive::Flux flux =
+        drive.flux(psi_cell, rhow * lpt, area, cells->surface_area(c), mass, s.mass0, dtw);
+    const double conductance = flux.conductance, rate = flux.rate;
+    s.psi_surface = flux.psi_surface;
     s.rate = rate;
     // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
     const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
     const double relax = conductance * std::max(0.0, stiffness);
     const double z = dtw * relax;
-    if (drive != DRIVE_CURVE) max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
+    if (drive.kind != CellDrive::CURVE)
+      max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
-    if (drive != DRIVE_CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
-    if (accel_pending) first_accel = std::min(first_accel, start_accel(c, conductance, slope));
-    if (sample) sample_probe(s, position, turgor, rate, conductance, sealed);
+    if (drive.kind != CellDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
+    if (accel.pending)
+      first_accel =
+          std::min(first_accel, accel.first(conductance, slope, modulus(c), mass, offset_time()));
+    if (cycle.sample) accel.sample(s.probe, cycle, turgor, rate, conductance);
     if (junctions) {
       // advanced with the network below (doc/model.md §5.13)
       double *v = &mine_net[NETWORK_VALUES * h];
@@ -644,8 +364,9 @@ void FixCellTurgor::evaluate(bool transfer)
 
     // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
     // M = M0 X/X0(t + dtw)
-    const double dmass = drive == DRIVE_CURVE ? target * s.mass0 - mass
-                                              : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
+    const double dmass = drive.kind == CellDrive::CURVE
+        ? drive.target * s.mass0 - mass
+        : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
     if (!(mass + dmass > 0.0)) {
       failure = Failure{c,
                         fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
@@ -667,17 +388,7 @@ void FixCellTurgor::evaluate(bool transfer)
   max_stiffness = all_most[1];
   first_accel = -all_most[2];
   busiest = all_most[3];
-  if (accel_pending) {
-    // the first accel of auto: from the cells' state, or 'start' (doc/model.md §5.12)
-    const double first = accel_start > 0.0 ? accel_start : first_accel;
-    const double a =
-        std::isfinite(first) ? std::min(accel_max, std::max(accel_min, first)) : accel_min;
-    max_stiffness *= a / accel;
-    accel = a;
-    accel_pending = 0;
-    // the current cycle's samples were made at another accel
-    open_samples = sealed_samples = 0;
-  }
+  if (accel.pending) max_stiffness *= accel.begin(first_accel);
   if (junctions) {
     // every cell's values from its home rank, on every rank (doc/model.md §5.2): the network is
     // solved on the gathered vectors, each home rank applies its cells' change
@@ -726,8 +437,12 @@ void FixCellTurgor::evaluate(bool transfer)
   double all_moved;
   MPI_Allreduce(&moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
   water_moved += all_moved;
-  if (drive != DRIVE_CURVE) physical_time += dtw;
-  if (accel_auto && position == every + hold - 1) adapt_accel(every);
+  if (drive.kind != CellDrive::CURVE) physical_time += dtw;
+  if (accel.automatic && cycle.position == cycle.every + cycle.hold - 1) {
+    std::vector<const double *> probes;
+    for (int c : home) probes.push_back(state[cells->id(c)].probe);
+    accel.adapt(cycle.every, probes, cells->ncell() > 0);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -780,87 +495,11 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<dou
 }
 
 /* ----------------------------------------------------------------------
-   accel auto: open transfers per cycle (default 20 offset times tau, at least 8) and sealed
-   transfers after them (default 5 tau, at least 4)
+   the cell's elastic modulus eps = V dP/dV: the fluid's K + P_SPH, in series with the thin
+   Neo-Hookean wall when the bond style gives G t0 (doc/model.md §6, §9.3)
 ------------------------------------------------------------------------- */
 
-bigint FixCellTurgor::accel_window() const
-{
-  if (accel_every > 0) return accel_every;
-  return std::max((bigint) 8, (bigint) lround(20.0 * offset_time() / (nevery * update->dt)));
-}
-
-bigint FixCellTurgor::accel_seal() const
-{
-  if (accel_hold > 0) return accel_hold;
-  return std::max((bigint) 4, (bigint) lround(5.0 * offset_time() / (nevery * update->dt)));
-}
-
-/* ----------------------------------------------------------------------
-   accel auto: a sample of the cell's turgor at a transfer of the second half of the open window
-   (with the rate and conductance; the last one is kept) or of the sealed window
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::sample_probe(CellState &s, bigint position, double turgor, double rate,
-                                 double conductance, bool sealed)
-{
-  double *p = s.probe;
-  if (!sealed && open_samples == 1) {
-    for (int k = 0; k < NPROBE; k++) p[k] = 0.0;
-    p[Y0] = turgor;
-  }
-  const double y = turgor - p[Y0];
-  if (sealed) {
-    p[SY2] += y;
-    p[SYY2] += y * y;
-    return;
-  }
-  const double t = (double) position;
-  p[ST] += t;
-  p[SY] += y;
-  p[STT] += t * t;
-  p[STY] += t * y;
-  p[SYY] += y * y;
-  p[RATE] = rate;
-  p[COND] = conductance;
-}
-
-/* ----------------------------------------------------------------------
-   accel auto: the cell's lag e = G (P_T - P_qs) / (dM/dt) at the end of the open window and its
-   standard error: P_T from the least-squares line through the open window's samples at the seal,
-   P_qs the mean of the sealed window's second half (doc/model.md §5.12); false without enough
-   samples or flux
-------------------------------------------------------------------------- */
-
-bool FixCellTurgor::cell_lag(const CellState &s, bigint every, double &lag, double &error) const
-{
-  const double *p = s.probe;
-  const double n = open_samples, m = sealed_samples;
-  if (n < 3 || m < 2 || p[RATE] == 0.0) return false;
-  const double dtt = p[STT] - p[ST] * p[ST] / n;
-  const double dty = p[STY] - p[ST] * p[SY] / n;
-  const double dyy = p[SYY] - p[SY] * p[SY] / n;
-  if (!(dtt > 0.0)) return false;
-  const double slope = dty / dtt, tbar = p[ST] / n, at = (double) every - tbar;
-  // P_T at the seal (t = every) on the line, variance s^2 (1/n + (t - tbar)^2 / Stt)
-  const double open = p[SY] / n + slope * at;
-  const double vopen = std::max(0.0, dyy - slope * dty) / (n - 2.0) * (1.0 / n + at * at / dtt);
-  // P_qs = the sealed mean, variance s^2 / m
-  const double sealed = p[SY2] / m;
-  const double vsealed = std::max(0.0, p[SYY2] - p[SY2] * p[SY2] / m) / ((m - 1.0) * m);
-  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value
-  lag = p[COND] * (open - sealed) / p[RATE];
-  error = p[COND] * sqrt(vopen + vsealed) / fabs(p[RATE]);
-  return std::isfinite(lag) && std::isfinite(error);
-}
-
-/* ----------------------------------------------------------------------
-   accel auto, the first accel of a cell: a = tol tau_w / tau_m with the water relaxation time
-   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the offset
-   time tau, the one mechanical time known before the run; the window then measures the lag
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::start_accel(int c, double conductance, double slope) const
+double FixCellTurgor::modulus(int c) const
 {
   const double fluid = kfluid + cells->sph_turgor(c);
   double eps = fluid;
@@ -873,55 +512,7 @@ double FixCellTurgor::start_accel(int c, double conductance, double slope) const
     // in series with the fluid: 1/eps = 1/eps_wall + 1/(K + P)
     eps = wall * fluid / (wall + fluid);
   }
-  // 1/tau_w = G (eps/M + slope), dP/dM = eps/M for a cell full of fluid
-  const double relax = conductance * (eps / cells->mass(c) + slope);
-  return relax > 0.0 ? accel_tol / (relax * offset_time()) : HUGE_VAL;
-}
-
-/* ----------------------------------------------------------------------
-   accel auto, at the end of a cycle: accel changes only when a cell's lag e is outside the
-   tolerance by more than twice its standard error (e - 2 se > tol: down to tol/e; e + 2 se < tol:
-   up to tol/(e + 2 se)), by at most x2 or /2, the most restrictive cell deciding, within
-   [min, max] (doc/model.md §5.12)
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::adapt_accel(bigint every)
-{
-  double factor = cells->ncell() > 0 ? 2.0 : 1.0;
-  bool first = true;
-  double lag = 0.0, lag_se = 0.0;
-  for (int c : cells->home_cells()) {
-    const CellState &s = state[cells->id(c)];
-    double e, se, f = 1.0;
-    if (cell_lag(s, every, e, se)) {
-      if (e - 2.0 * se > accel_tol)
-        f = std::max(0.5, accel_tol / e);
-      else if (e + 2.0 * se < accel_tol)
-        f = e + 2.0 * se > 0.0 ? std::min(2.0, accel_tol / (e + 2.0 * se)) : 2.0;
-      if (first || e > lag) {
-        lag = e;
-        lag_se = se;
-        first = false;
-      }
-    }
-    factor = std::min(factor, f);
-  }
-  // over all ranks: the most restrictive factor, the largest lag (the lowest rank's of equals)
-  double all_factor;
-  MPI_Allreduce(&factor, &all_factor, 1, MPI_DOUBLE, MPI_MIN, world);
-  factor = all_factor;
-  const double mine[3] = {first ? 0.0 : 1.0, lag, lag_se};
-  std::vector<double> lags(3 * comm->nprocs);
-  MPI_Allgather(mine, 3, MPI_DOUBLE, lags.data(), 3, MPI_DOUBLE, world);
-  first = true;
-  for (int p = 0; p < comm->nprocs; p++)
-    if (lags[3 * p] > 0.0 && (first || lags[3 * p + 1] > lag_estimate)) {
-      lag_estimate = lags[3 * p + 1];
-      lag_error = lags[3 * p + 2];
-      first = false;
-    }
-  accel = std::min(accel_max, std::max(accel_min, accel * factor));
-  open_samples = sealed_samples = 0;
+  return eps;
 }
 
 /* ----------------------------------------------------------------------
@@ -934,32 +525,6 @@ double FixCellTurgor::offset_time() const
 }
 
 /* ----------------------------------------------------------------------
-   osmotic pressure of a cell at fluid mass M and temperature T, and slope = -dpi/dM:
-   solutes pi0 (T/Tref) [M0/M with van 't Hoff]; with the GAB isotherm, where it is larger, the
-   sorption pressure -(R T/V_w) ln a_GAB(X), X = M/S (doc/model.md §5.5, §5.10)
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::osmotic_pressure(const CellState &s, double mass, double t,
-                                       double *slope) const
-{
-  const bool vanthoff = osmotic_law == VANTHOFF && s.mass0 > 0.0;
-  // pi = pi0 (T/Tref) M0/M (van 't Hoff, non-permeating solutes)
-  double pi = s.pi0 * (t / tref) * (vanthoff ? s.mass0 / mass : 1.0);
-  if (slope) *slope = vanthoff ? pi / mass : 0.0;
-  if (!isotherm || s.solids <= 0.0) return pi;
-  const CellWater::Gab gab{gab_xm, gab_c, gab_k};
-  const double x = mass / s.solids;
-  const double a = gab.activity(x);
-  if (!(a < 1.0)) return pi;
-  // pi_sorption = -(R T / V_w) ln a_GAB(X), -dpi/dM = (R T / V_w) (da/dX) / (a S)
-  const double sorption = -CellWater::kelvin_potential(a, t);
-  if (sorption <= pi) return pi;
-  if (slope)
-    *slope = CellWater::GAS_R * t / CellWater::WATER_V * gab.activity_slope(x) / (a * s.solids);
-  return sorption;
-}
-
-/* ----------------------------------------------------------------------
    the turgor that drives the flux. turgor sph: the mean SPH pressure. turgor wall: the mean SPH
    pressure minus its running mean offset from the wall load, so that the steady state is the wall
    load P_W = pi + psi_ext while each transfer sees the fluid's instantaneous, smooth response (the
@@ -967,7 +532,7 @@ double FixCellTurgor::osmotic_pressure(const CellState &s, double mass, double t
    transfer steps only, so a run split in two continues as one
 ------------------------------------------------------------------------- */
 
-double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
+double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
 {
   const double psph = cells->sph_turgor(c);
   s.turgor = psph;
@@ -985,7 +550,8 @@ double FixCellTurgor::flux_turgor(int c, CellState &s, bool advance)
    turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
-bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, double demand)
+bool FixCellTurgor::check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi,
+                                double demand)
 {
   const double gt = cells->mean_gt0(c);
   const double area0 = cells->ref_area(c);
@@ -997,7 +563,7 @@ bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, d
   const double stretch = sqrt(cells->area(c) / area0);
 
   std::string why;
-  if (osmotic_law == FIXED && demand > pmax)
+  if (!osmotic_model.vanthoff() && demand > pmax)
     why = "its demanded turgor pi + psi_ext exceeds the wall's limit-point pressure";
   else if (stretch > pow(7.0, 1.0 / 6.0) && turgor < demand)
     why = fmt::format("its wall passed the limit-point stretch 7^(1/6) = 1.383 (stretch {:.4g}) "
@@ -1027,9 +593,9 @@ bool FixCellTurgor::check_limit(int c, CellState &s, double turgor, double pi, d
 
 bool FixCellTurgor::turgor(tagint cell, double &pt) const
 {
-  auto it = state.find(cell);
-  if (it == state.end()) return false;
-  pt = it->second.turgor;
+  const CellTurgorState::Cell *s = state.find(cell);
+  if (!s) return false;
+  pt = s->turgor;
   return true;
 }
 
@@ -1040,9 +606,11 @@ bool FixCellTurgor::turgor(tagint cell, double &pt) const
 
 bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 {
-  auto it = state.find(cell);
-  if (it == state.end()) return false;
-  pi = osmotic_pressure(it->second, mass, temperature > 0.0 ? temperature : tref, nullptr);
+  const CellTurgorState::Cell *s = state.find(cell);
+  if (!s) return false;
+  pi = osmotic_model.pressure(s->pi0, s->mass0, s->solids, mass,
+                              drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref,
+                              nullptr);
   return true;
 }
 
@@ -1053,14 +621,13 @@ bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 
 bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 {
-  auto it = state.find(cell);
-  if (it == state.end()) return false;
-  const CellState &s = it->second;
-  w.moisture = s.solids > 0.0 ? mass / s.solids : 0.0;
-  w.relative = s.mass0 > 0.0 ? mass / s.mass0 : 0.0;
-  w.temperature = temperature > 0.0 ? temperature : tref;
-  w.psi_surface = s.psi_surface;
-  w.rate = s.rate;
+  const CellTurgorState::Cell *s = state.find(cell);
+  if (!s) return false;
+  w.moisture = s->solids > 0.0 ? mass / s->solids : 0.0;
+  w.relative = s->mass0 > 0.0 ? mass / s->mass0 : 0.0;
+  w.temperature = drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref;
+  w.psi_surface = s->psi_surface;
+  w.rate = s->rate;
   return true;
 }
 
@@ -1075,11 +642,11 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved,        physical_time,   (double) cells->ncell(),
-                           max_imbalance,      max_stiffness,   temperature,
-                           mass_transfer,      accel,           lag_estimate,
-                           lag_error,          water_exchanged, exchange_net,
-                           exchange_stiffness, busiest};
+  const double values[] = {water_moved,         physical_time,   (double) cells->ncell(),
+                           max_imbalance,       max_stiffness,   drive.temperature,
+                           drive.mass_transfer, accel.value,     accel.lag_estimate,
+                           accel.lag_error,     water_exchanged, exchange_net,
+                           exchange_stiffness,  busiest};
   return values[n];
 }
 
@@ -1098,10 +665,10 @@ int FixCellTurgor::modify_param(int narg, char **arg)
                key);
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
   if (key == "accel") {
-    const int used = 1 + parse_accel(narg - 1, &arg[1], "Fix_modify cell/turgor");
-    if (accel_auto && drive == DRIVE_CURVE)
+    const int used = 1 + accel.parse(narg - 1, &arg[1], "Fix_modify cell/turgor");
+    if (accel.automatic && drive.kind == CellDrive::CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
-    if (accel_auto && junctions)
+    if (accel.automatic && junctions)
       error->all(FLERR,
                  "Fix_modify cell/turgor: exchange does not work with accel auto: give accel a "
                  "number");
@@ -1113,11 +680,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
       error->all(FLERR, "Fix_modify cell/turgor: wall permeability LP = {} must be >= 0", value);
     lp = value;
   } else if (key == "psi") {
-    if (drive != DRIVE_PSI)
-      error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
-                 drive == DRIVE_AIR ? "air" : "curve");
-    parse_quantity(psi, arg[1]);
-    psi.resolve(lmp, "Fix cell/turgor: variable");
+    drive.modify_psi(arg[1]);
   }
   return 2;
 }
@@ -1126,28 +689,15 @@ int FixCellTurgor::modify_param(int narg, char **arg)
 
 void FixCellTurgor::write_restart(FILE *fp)
 {
-  // every cell's state from its home rank, in ascending ID (a cell's copies on every rank when no
-  // run followed read_restart: the first)
   std::vector<double> cellstate;
-  gather_state(false, cellstate);
+  const int ncell = state.gather_restart(RESTART_VERSION, cellstate);
   if (comm->me != 0) return;
-  std::map<tagint, size_t> order;
-  for (size_t at = 0; at < cellstate.size(); at += restart_values(RESTART_VERSION))
-    order.emplace((tagint) cellstate[at], at);
   // version 1 (no marker) began with the number of cells >= 0; later versions with -version
-  std::vector<double> list = {(double) -RESTART_VERSION,
-                              (double) order.size(),
-                              physical_time,
-                              water_moved,
-                              accel_auto ? accel : 0.0,
-                              (double) open_samples,
-                              (double) sealed_samples,
-                              lag_estimate,
-                              lag_error,
-                              water_exchanged};
-  for (const auto &kv : order)
-    list.insert(list.end(), &cellstate[kv.second],
-                &cellstate[kv.second] + restart_values(RESTART_VERSION));
+  std::vector<double> list = {(double) -RESTART_VERSION, (double) ncell, physical_time,
+                              water_moved};
+  accel.write(list);
+  list.push_back(water_exchanged);
+  list.insert(list.end(), cellstate.begin(), cellstate.end());
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -1171,19 +721,11 @@ void FixCellTurgor::restart(char *buf)
   physical_time = list[1];
   water_moved = list[2];
   // accel auto continues from the adapted accel and its window when the file has them (4)
-  const bool adapted = version >= 4 && list[3] > 0.0 && accel_auto;
-  if (adapted) {
-    accel = std::min(accel_max, std::max(accel_min, list[3]));
-    accel_pending = 0;
-    open_samples = (int) list[4];
-    sealed_samples = (int) list[5];
-    lag_estimate = list[6];
-    lag_error = list[7];
-  }
+  const bool adapted = version >= 4 && accel.read(&list[3]);
   if (version >= 5) water_exchanged = list[8];
   state.clear();
   bool other_pi0 = false, other_solids = false;
-  const int nvalues = restart_values(version);
+  const int nvalues = CellTurgorState::restart_values(version);
   for (int k = 0; k < n; k++) {
     const double *v = &list[1 + restart_globals(version) + nvalues * k];
     // version 1 files written before the offset was stored had 4 values per cell: caught here
@@ -1194,14 +736,14 @@ void FixCellTurgor::restart(char *buf)
                  version, k + 1, n, v[0], v[3]);
     // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
     const double solids = version >= 3 ? v[5] : 0.0;
-    CellState cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
-    if (adapted) std::copy(v + 6, v + 6 + NPROBE, cell.probe);
+    CellTurgorState::Cell cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
+    if (adapted) std::copy(v + 6, v + 6 + CellAccel::NPROBE, cell.probe);
     // every rank holds every cell until init() keeps its home cells
     state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;
     other_solids = other_solids ||
-        (solids > 0.0 && solids_fraction > 0.0 &&
-         fabs(solids - v[1] * solids_fraction / (1.0 - solids_fraction)) > 1e-12 * solids);
+        (solids > 0.0 && osmotic_model.solids_fraction > 0.0 &&
+         fabs(solids - osmotic_model.solids(v[1])) > 1e-12 * solids);
   }
   if (other_pi0 && comm->me == 0)
     error->warning(FLERR,
@@ -1213,7 +755,7 @@ void FixCellTurgor::restart(char *buf)
         FLERR,
         "Fix cell/turgor: cells continue with the dry solids stored in the restart file, "
         "not those of solids = {}",
-        solids_fraction);
+        osmotic_model.solids_fraction);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1229,57 +771,6 @@ int FixCellTurgor::pack_forward_comm(int n, int *list, double *buf, int, int *)
 void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
 {
   for (int k = 0; k < n; k++) atom->rmass[first + k] = buf[k];
-}
-
-/* ----------------------------------------------------------------------
-   this rank's cell states, restart_values(RESTART_VERSION) each: ID, mass0, pi0, warned, offset,
-   solids, the accel auto sums; full: + the last evaluation's turgor, psi_surface and rate
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::pack_state(std::vector<double> &list, bool full) const
-{
-  list.clear();
-  for (const auto &kv : state) {
-    const CellState &s = kv.second;
-    list.insert(list.end(),
-                {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
-    list.insert(list.end(), s.probe, s.probe + NPROBE);
-    if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
-  }
-}
-
-void FixCellTurgor::unpack_state(const double *v, bool full, CellState &s) const
-{
-  s = CellState{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
-  std::copy(v + 6, v + 6 + NPROBE, s.probe);
-  if (!full) return;
-  s.turgor = v[6 + NPROBE];
-  s.psi_surface = v[7 + NPROBE];
-  s.rate = v[8 + NPROBE];
-}
-
-/* ----------------------------------------------------------------------
-   every rank's cell states (full with everywhere) on every rank, or on rank 0 only
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::gather_state(bool everywhere, std::vector<double> &list) const
-{
-  std::vector<double> mine;
-  pack_state(mine, everywhere);
-  const int n = (int) mine.size(), nprocs = comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  if (everywhere)
-    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  else
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  list.resize(everywhere || comm->me == 0 ? displs.back() + counts.back() : 0);
-  if (everywhere)
-    MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, list.data(), counts.data(), displs.data(),
-                   MPI_DOUBLE, world);
-  else
-    MPI_Gatherv(mine.data(), n, MPI_DOUBLE, list.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                0, world);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -7,11 +7,14 @@
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
+#include "cell_accel.h"
+#include "cell_drive.h"
 #include "cell_network.h"
+#include "cell_osmotic.h"
 #include "cell_quantity.h"
+#include "cell_turgor_state.h"
 #include "fix.h"
 
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,44 +56,19 @@ class FixCellTurgor : public Fix {
   const CellRegistry &registry() const;
 
  protected:
-  enum Osmotic { FIXED = 0, VANTHOFF = 1 };
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
-  enum Drive { DRIVE_PSI = 0, DRIVE_AIR = 1, DRIVE_CURVE = 2 };
-  struct CellState {
-    double mass0;                // fluid mass when the fix first saw the cell (kg)
-    double pi0;                  // osmotic pressure at mass0 and Tref (Pa)
-    int warned;                  // 1 once the limit-point warning was printed
-    double offset;               // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
-    double solids;               // dry solids S (kg), 0 without 'solids'
-    double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
-    double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
-    double probe[10];            // accel auto: the cycle's sums (enum Probe)
-  };
-  // accel auto, per cell: P_T shifted by its first sample, sums over the open window's samples
-  // (t = position, y = P_T), the rate and conductance of its last transfer, sums over the sealed
-  // window's samples
-  enum Probe { Y0, ST, SY, STT, STY, SYY, RATE, COND, SY2, SYY2, NPROBE };
-
-  double lp, pi0, rhow, accel;
-  int drive;
-  CellQuantity psi, temp, air_t, air_rh, air_hm, curve;
-  CellQuantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
-  int air_flow;
-  double area_fraction;      // share of the wall area in contact with the air
-  int surface_group;         // 'surface': air only on the triangles of this group's atoms, or -1
-  double mass_transfer;      // h_m of the last evaluation (m/s)
-  double ea, tref;           // activation energy of L_P (J/mol), reference temperature (K)
-  double solids_fraction;    // wet-basis solids fraction w_s, 0 = none
-  int isotherm;              // 1: GAB isotherm below
-  double gab_xm, gab_c, gab_k;
-  double temperature;    // cell temperature T of the last evaluation (K)
-  double tau;            // MD time of the running mean of the offset (s), 0 = 100 N dt
-  double bulk;           // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
-  double kfluid;         // K in use
-  int osmotic_law, limit, limit_set, fluidtype, walltype;
+  double lp, pi0, rhow;
+  CellAccel accel;              // accel, fixed or auto
+  double ea;                    // activation energy of L_P (J/mol)
+  CellOsmotic osmotic_model;    // pi(T, M): solutes, dry solids, GAB; Tref
+  CellDrive drive;              // T and psi_ext, air or a curve: each cell's flux
+  double tau;                   // MD time of the running mean of the offset (s), 0 = 100 N dt
+  double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
+  double kfluid;    // K in use
+  int limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
-  std::map<tagint, CellState> state;    // the home cells' (and on rank 0 unknown cells') state
-  std::vector<double> gt0;              // G t0 per bond type from the bond style, empty without it
+  CellTurgorState state;      // per cell, on its home rank
+  std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
   double busiest;    // the most cells one rank summed at the last evaluation
@@ -110,35 +88,14 @@ class FixCellTurgor : public Fix {
   double exchange_net;          // sum over cells of the exchange's mass change, last transfer (kg)
   double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
 
-  // accel auto: tolerance, floor, ceiling, start (0: from the cell's state), transfers per
-  // adaptation; pending: accel still to be set from the cells' state at the next evaluation
-  int accel_auto, accel_every, accel_hold, accel_pending;
-  int open_samples, sealed_samples;    // of the current cycle
-  double accel_tol, accel_min, accel_max, accel_start;
-  double lag_estimate, lag_error;    // of the last adaptation window
-
   void evaluate(bool transfer);
-  void pack_state(std::vector<double> &list, bool full) const;
-  void unpack_state(const double *v, bool full, CellState &cell) const;
-  void gather_state(bool everywhere, std::vector<double> &list) const;
   void exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid, bool transfer,
                 double dtw, double factor, std::vector<double> &dmass);
-  int parse_accel(int narg, char **arg, const std::string &command);
-  double start_accel(int c, double conductance, double slope) const;
-  bigint accel_window() const;
-  bigint accel_seal() const;
-  void sample_probe(CellState &s, bigint position, double turgor, double rate, double conductance,
-                    bool sealed);
-  bool cell_lag(const CellState &s, bigint every, double &lag, double &error) const;
-  void adapt_accel(bigint every);
+  double modulus(int c) const;
   double offset_time() const;
-  bool check_limit(int c, CellState &s, double turgor, double pi, double demand);
-  double flux_turgor(int c, CellState &s, bool advance);
+  bool check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi, double demand);
+  double flux_turgor(int c, CellTurgorState::Cell &s, bool advance);
   double pair_bulk_modulus();
-  double osmotic_pressure(const CellState &s, double mass, double t, double *slope) const;
-  void parse_quantity(CellQuantity &in, const char *arg);
-  void check_air(double t, double rh, double hm);
-  double flow_transfer(double t, double u, double l);
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,194 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   fix cell/turgor's external drive: psi_ext, air (h_m or a laminar flow) or a drying curve, and
+   the cell temperature (doc/model.md §5.1, §5.7-5.10)
+------------------------------------------------------------------------- */
+
+#include "cell_drive.h"
+
+#include "cell_args.h"
+#include "error.h"
+#include "group.h"
+#include "update.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+CellDrive::CellDrive(LAMMPS *lmp, const std::string &command) :
+    Pointers(lmp), kind(PSI), surface_group(-1), temperature(0.0), mass_transfer(0.0), psi_ext(0.0),
+    target(0.0),
+    command(command), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
+    air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
+    air_flow(0), temp_set(0), area_fraction(1.0), hm(0.0), rho_sat(0.0), rho_air(0.0)
+{
+}
+
+/* ----------------------------------------------------------------------
+   psi value, air T RH hm|flow U L [area f] [surface group-ID], curve v_name, temp T
+------------------------------------------------------------------------- */
+
+int CellDrive::parse(int narg, char **arg, double tref)
+{
+  const std::string key = arg[0];
+  if (key != "psi" && key != "air" && key != "curve" && key != "temp") return 0;
+  const char *value = CellArgs::values(error, command, narg, arg, 1)[0];
+  if (key == "temp") {
+    temp = CellArgs::quantity(lmp, value);
+    if (temp.name.empty() && !(temp.value > 0.0))
+      error->all(FLERR, "{}: temperature T = {} K must be > 0", command, temp.value);
+    temp_set = 1;
+    return 2;
+  }
+  drives += " " + key;
+  if (key == "psi") {
+    psi = CellArgs::quantity(lmp, value);
+    return 2;
+  }
+  if (key == "curve") {
+    curve = CellArgs::quantity(lmp, value);
+    if (curve.name.empty())
+      error->all(FLERR, "{}: curve = {} must be an equal-style variable v_name", command, value);
+    kind = CURVE;
+    return 2;
+  }
+  char **v = CellArgs::values(error, command, narg, arg, 3);
+  air_t = CellArgs::quantity(lmp, v[0]);
+  air_rh = CellArgs::quantity(lmp, v[1]);
+  int used = 4;
+  air_flow = strcmp(v[2], "flow") == 0;
+  if (air_flow) {
+    v = CellArgs::values(error, command, narg, arg, 5);
+    air_speed = CellArgs::quantity(lmp, v[3]);
+    air_length = CellArgs::quantity(lmp, v[4]);
+    used = 6;
+  } else {
+    air_hm = CellArgs::quantity(lmp, v[2]);
+  }
+  // numbers are checked now, variables at every transfer (placeholders pass the check)
+  const double t0 = air_t.name.empty() ? air_t.value : tref;
+  check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0, air_hm.name.empty() ? air_hm.value : 0.0);
+  if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
+    flow_transfer(t0, air_speed.value, air_length.value);
+  // optional 'area f' and 'surface group-ID', in either order
+  while (used + 1 < narg) {
+    const char *word = arg[used], *next = arg[used + 1];
+    if (strcmp(word, "area") == 0) {
+      area_fraction = utils::numeric(FLERR, next, false, lmp);
+      if (!(area_fraction > 0.0 && area_fraction <= 1.0))
+        error->all(FLERR, "{}: air area fraction = {} must be in (0, 1]", command, area_fraction);
+    } else if (strcmp(word, "surface") == 0) {
+      surface_group = group->find(next);
+      if (surface_group < 0)
+        error->all(FLERR, "{}: air surface group {} does not exist", command, next);
+    } else
+      break;
+    used += 2;
+  }
+  kind = AIR;
+  return used;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellDrive::check(double tref)
+{
+  if (drives.find(' ', 1) != std::string::npos)
+    error->all(FLERR, "{}: give one drive of psi, air and curve, not{}", command, drives);
+  // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
+  if (!temp_set) temp = kind == AIR ? air_t : CellQuantity{tref, "", -1};
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellDrive::init()
+{
+  for (CellQuantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
+    in->resolve(lmp, command + ": variable");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellDrive::modify_psi(const char *arg)
+{
+  if (kind != PSI)
+    error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
+               kind == AIR ? "air" : "curve");
+  psi = CellArgs::quantity(lmp, arg);
+  psi.resolve(lmp, command + ": variable");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellDrive::evaluate(double &time, double advance)
+{
+  const double t = temp.get(lmp);
+  if (!(t > 0.0))
+    error->all(FLERR, "{}: temperature T = {} K must be > 0 (step {})", command, t,
+               update->ntimestep);
+  temperature = t;
+  psi_ext = hm = rho_sat = rho_air = target = 0.0;
+  if (kind == PSI) {
+    psi_ext = psi.get(lmp);
+  } else if (kind == AIR) {
+    const double tair = air_t.get(lmp), rh = air_rh.get(lmp);
+    hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
+    mass_transfer = hm;
+    check_air(tair, rh, hm);
+    if (!(t < CellWater::CRITICAL_T))
+      error->all(FLERR, "{}: temperature T = {} K must be below the critical point of water, {} K",
+                 command, t, CellWater::CRITICAL_T);
+    rho_sat = CellWater::saturation_density(t);
+    rho_air = rh * CellWater::saturation_density(tair);
+    // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
+    psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
+  } else {
+    time += advance;
+    target = curve.get(lmp);
+    if (!(target > 0.0))
+      error->all(FLERR, "{}: curve X/X0 = {} must be > 0 (physical time {} s)", command, target,
+                 time);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   h_m of air at T flowing at U >= 0 along a sample of length L > 0: laminar flat plate,
+   Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
+------------------------------------------------------------------------- */
+
+double CellDrive::flow_transfer(double t, double u, double l) const
+{
+  if (!(u >= 0.0)) error->all(FLERR, "{}: air speed U = {} m/s must be >= 0", command, u);
+  if (!(l > 0.0)) error->all(FLERR, "{}: sample length L = {} m must be > 0", command, l);
+  if (!(t > 250.0 && t < 450.0))
+    error->all(FLERR,
+               "{}: air temperature T = {} K is outside 250-450 K, the range of the vapour "
+               "diffusivity in air behind 'flow' (give h_m instead)",
+               command, t);
+  const double re = CellWater::reynolds(t, u, l);
+  if (!(re < 5e5))
+    error->all(FLERR,
+               "{}: air flow U = {} m/s along L = {} m has Re = {:.4g}, beyond the laminar "
+               "flat-plate correlation (Re < 5e5): give h_m instead",
+               command, u, l, re);
+  return CellWater::plate_transfer(t, u, l);
+}
+
+/* ----------------------------------------------------------------------
+   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, h_m >= 0
+------------------------------------------------------------------------- */
+
+void CellDrive::check_air(double t, double rh, double hm) const
+{
+  if (!(t > 0.0)) error->all(FLERR, "{}: air temperature T = {} K must be > 0", command, t);
+  if (!(t < CellWater::CRITICAL_T))
+    error->all(FLERR,
+               "{}: air temperature T = {} K must be below the critical point of water, {} K",
+               command, t, CellWater::CRITICAL_T);
+  if (!(rh > 0.0 && rh <= 1.0))
+    error->all(FLERR, "{}: relative humidity RH = {} must be in (0, 1]", command, rh);
+  if (!(hm >= 0.0))
+    error->all(FLERR, "{}: mass-transfer coefficient hm = {} m/s must be >= 0", command, hm);
+}

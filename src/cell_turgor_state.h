@@ -1,0 +1,64 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   fix cell/turgor's per-cell state, kept on each cell's home rank (doc/model.md §5.2): one Cell
+   per cell ID, moved to the home ranks of a run at init, gathered in ascending ID for the restart
+   file, and the per-cell layout of each restart format version
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CELL_TURGOR_STATE_H
+#define LMP_CELL_TURGOR_STATE_H
+
+#include "cell_accel.h"
+#include "pointers.h"
+
+#include <map>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class CellRegistry;
+
+class CellTurgorState : protected Pointers {
+ public:
+  struct Cell {
+    double mass0;                // fluid mass when the fix first saw the cell (kg)
+    double pi0;                  // osmotic pressure at mass0 and Tref (Pa)
+    int warned;                  // 1 once the limit-point warning was printed
+    double offset;               // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
+    double solids;               // dry solids S (kg), 0 without 'solids'
+    double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
+    double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
+    double probe[CellAccel::NPROBE];    // accel auto: the cycle's sums
+  };
+
+  CellTurgorState(class LAMMPS *);
+
+  // restart values per cell of format version: ID, mass0, pi0, warned, offset (versions 1, 2),
+  // solids (3), the accel auto cycle's sums (4: CellAccel::NPROBE = 10 values)
+  static int restart_values(int version);
+
+  Cell &operator[](tagint id) { return cells[id]; }
+  // the cell's state on this rank, nullptr if it has none
+  const Cell *find(tagint id) const;
+  void clear() { cells.clear(); }
+
+  // every rank's cell states: with everywhere, their restart values and the last evaluation's
+  // turgor, psi_surface and rate on every rank (before the cells are found again at init)
+  void gather(bool everywhere, std::vector<double> &list) const;
+  // keep the gathered cells whose home rank this is (rank 0: also cells no longer in the group);
+  // home cells without a state begin one with osmotic pressure pi0
+  void keep_home(const std::vector<double> &list, const CellRegistry &reg, double pi0);
+  // on rank 0: every cell's restart values of format version (the fix's current one) from its
+  // home rank, in ascending ID (a cell's copies on every rank when no run followed read_restart:
+  // the first); returns the number of cells
+  int gather_restart(int version, std::vector<double> &list) const;
+
+ private:
+  std::map<tagint, Cell> cells;    // the home cells' (and on rank 0 unknown cells') state
+
+  void pack(std::vector<double> &list, bool full) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
