@@ -12,7 +12,9 @@
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
 # dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
 # XS="0.5 0.2" (default) are the X/X0 of the table. Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
-# the cores (note it with the table). WORK=dir keeps (and reuses) the runs there.
+# the cores (note it with the table); the CPU time (user + system, /usr/bin/time) is the cost.
+# WORK=dir keeps (and reuses) the runs there. LMPVARS="-var NAME VALUE ..." is passed to every run
+# (e.g. LMPVARS="-var tensile 0" for the scene without the artificial stress).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -21,6 +23,7 @@ work=${WORK:-$(mktemp -d)}
 mkdir -p "$work"
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 export LAMMPS_POTENTIALS=$here/../potentials
+extra=(${LMPVARS:-})
 if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$build/bin/lmp"); fi
 points=("$@")
 [ ${#points[@]} -gt 0 ] || points=("1092 0.015" "1092 0.03" "642 0.03" "312 0.015" "312 0.03" "312 0.06")
@@ -50,10 +53,11 @@ PY
   )
   if [ ! -s "final_$tag.txt" ]; then
     t0=$SECONDS
-    "${lmp[@]}" -in "$here/../examples/drying/in.drying" -var data "c$nw.data" -var tag "$tag" \
-      -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" -var nup "$nup" \
-      -log "log.$tag" >"$tag.screen" || echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
-    echo "$((SECONDS - t0))" >"wall_$tag.txt"
+    /usr/bin/time -f "%U %S" -o "cpu_$tag.txt" "${lmp[@]}" -in "$here/../examples/drying/in.drying" \
+      -var data "c$nw.data" -var tag "$tag" -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" \
+      -var nup "$nup" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
+      echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
+    echo "$((SECONDS - t0)) / $(awk '{printf "%.0f", $1 + $2}' "cpu_$tag.txt")" >"wall_$tag.txt"
   fi
 done
 XS=${XS:-0.5 0.2} python3 - "${points[@]}" <<'PY'
@@ -88,7 +92,7 @@ print(f"reference: {pts[0][0]} wall particles, {pts[0][1]} s of physical time pe
       f"X/X0 = {' and '.join(map(str, XS))} relative to the turgid cell; A, P, F: mean +- spread of the sections "
       "x, y, z through the centroid (error: of the mean)")
 head = [f"{k}@{x}" for x in XS for k in ("A", "P", "F", "V", "wrink")]
-print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock (s) |")
+print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock / CPU (s) |")
 print("|---" * (2 + len(head) + 2) + "|")
 for (n, ts), t in zip(pts, tags):
     vals, errs = [], []

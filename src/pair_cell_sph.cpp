@@ -34,8 +34,8 @@
 using namespace LAMMPS_NS;
 
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
-// 4: the temperature of the viscosity (temp, Tref)
-static const int RESTART_VERSION = 5;
+// 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp)
+static const int RESTART_VERSION = 6;
 static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
@@ -62,11 +62,20 @@ static const int REFRESH = 20;
 // particle shifting: the largest displacement of one step, in units of the atom's h
 static const double SHIFT_MAX = 0.05;
 
+// f^n of the artificial stress, n >= 1
+static inline double power_n(double f, int n)
+{
+  double p = f;
+  for (int k = 1; k < n; k++) p *= f;
+  return p;
+}
+
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
     hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
+    tensile(0.0), tensile_n(4), tensile_dp(0.0), stress(nullptr), pairw(nullptr), pairwj(nullptr),
     pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
     viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
     hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
@@ -99,6 +108,8 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairdwj);
   memory->destroy(pairr);
   memory->destroy(pairmu);
+  memory->destroy(pairw);
+  memory->destroy(pairwj);
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(setflag);
@@ -123,8 +134,8 @@ void PairCellSPH::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   const int peratom = hmode != HFIXED;
-  const bool grown =
-      atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum) || (shift > 0.0 && !gradc);
+  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum) ||
+      (shift > 0.0 && !gradc) || (tensile > 0.0 && !stress);
   if (grown) grow_peratom();
   if (temp_set) update_viscosity();
 
@@ -167,14 +178,20 @@ void PairCellSPH::compute(int eflag, int vflag)
       if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
       if (peratom) prho2[i] /= omega[i];
     }
+  if (tensile > 0.0) artificial_stress();
 
   typedef void (PairCellSPH::*Loop)();
-  static const Loop FORCES[2][2][2] = {
-      {{&PairCellSPH::sum_forces<0, 0, 0>, &PairCellSPH::sum_forces<0, 0, 1>},
-       {&PairCellSPH::sum_forces<0, 1, 0>, &PairCellSPH::sum_forces<0, 1, 1>}},
-      {{&PairCellSPH::sum_forces<1, 0, 0>, &PairCellSPH::sum_forces<1, 0, 1>},
-       {&PairCellSPH::sum_forces<1, 1, 0>, &PairCellSPH::sum_forces<1, 1, 1>}}};
-  (this->*FORCES[viscous][evflag ? 1 : 0][peratom])();
+#define CELLSPH_FORCES(V, E)                                                      \
+  {                                                                               \
+    {&PairCellSPH::sum_forces<V, E, 0, 0>, &PairCellSPH::sum_forces<V, E, 0, 1>}, \
+    {                                                                             \
+      &PairCellSPH::sum_forces<V, E, 1, 0>, &PairCellSPH::sum_forces<V, E, 1, 1>  \
+    }                                                                             \
+  }
+  static const Loop FORCES[2][2][2][2] = {{CELLSPH_FORCES(0, 0), CELLSPH_FORCES(0, 1)},
+                                          {CELLSPH_FORCES(1, 0), CELLSPH_FORCES(1, 1)}};
+#undef CELLSPH_FORCES
+  (this->*FORCES[viscous][evflag ? 1 : 0][peratom][tensile > 0.0 ? 1 : 0])();
   if (walls) {
     if (evflag)
       wall_forces<1>();
@@ -187,6 +204,50 @@ void PairCellSPH::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
   // not in a run's setup nor in a minimisation
   if (shift > 0.0 && !update->setupflag && update->whichflag == 1) shift_atoms();
+}
+
+/* ----------------------------------------------------------------------
+   artificial stress (pair_style keyword tensile): stress_i = R_i / w(dp_i/h_i)^n of owned and
+   ghost fluid atoms from their rho and pressure, R_i = eps |P_i| / rho_i^2 if P_i < 0, else 0,
+   w the kernel's shape f(q) (Monaghan 2000; doc/pair_cell_sph.md); dp_i = dp, or the atom's
+   spacing h_i/eta (per-atom h) or (m_i/rho0)^(1/d) (h fixed); h_i the atom's own h
+------------------------------------------------------------------------- */
+
+void PairCellSPH::artificial_stress()
+{
+  const double *rho = atom->dvector[irho];
+  const double *pressure = atom->dvector[ipressure];
+  const double *hv = hmode != HFIXED ? atom->dvector[ih] : nullptr;
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const double invdim = 1.0 / domain->dimension;
+  const double support = CellKernel::support(kernel);
+  for (int i = 0; i < nall; i++) {
+    const int t = type[i];
+    if (!fluid[t] || !(pressure[i] < 0.0)) {
+      stress[i] = 0.0;
+      continue;
+    }
+    const double hi = hv ? hv[i] : h[t][t];
+    const double dp = tensile_dp > 0.0 ? tensile_dp
+        : hv                           ? hi / eta
+                                       : pow(rmass[i] * invrho0[t], invdim);
+    if (!(dp < support * hi)) {
+      if (i < nlocal)
+        error->one(FLERR,
+                   "Pair style cell/sph: tensile dp = {:.4g} m of atom {} (cell {}) is not inside "
+                   "the kernel support {:.4g} m (h = {:.4g} m) on step {}: W(dp) = 0",
+                   dp, atom->tag[i], atom->molecule ? atom->molecule[i] : 0, support * hi, hi,
+                   update->ntimestep);
+      stress[i] = 0.0;
+      continue;
+    }
+    // R_i = eps |P_i| / rho_i^2 (doc/pair_cell_sph.md, eq. T1), divided by f(dp_i/h_i)^n
+    const double wdp = CellKernel::W(kernel, CellKernel::Scale{1.0 / hi, 1.0, 1.0}, dp);
+    stress[i] = -tensile * pressure[i] / (rho[i] * rho[i] * power_n(wdp, tensile_n));
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -459,6 +520,7 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(gradsum);
   memory->destroy(disp);
   memory->destroy(gradc);
+  memory->destroy(stress);
   memory->destroy(slot);
   memory->destroy(hscale);
   memory->destroy(dsum);
@@ -483,6 +545,7 @@ void PairCellSPH::grow_peratom()
     }
   }
   if (shift > 0.0) memory->create(gradc, nmax, 3, "pair:gradc");
+  if (tensile > 0.0) memory->create(stress, nmax, "pair:stress");
   if (!walls) return;
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
@@ -596,6 +659,8 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       const double mj = rmass[j];
       // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2)
       const double w = CellKernel::W<KERNEL>(p.scale, r);
+      // the artificial stress's kernel shape f(r/h) (doc/pair_cell_sph.md, eq. T2)
+      if (tensile > 0.0) pairw[npairs] = CellKernel::shape<KERNEL>(r * p.scale.invh);
       rhoi += mj * w;
       if (newton_pair || j < nlocal) rho[j] += mi * w;
 
@@ -635,16 +700,18 @@ inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k,
   const double dim = domain->dimension;
   const double mi = atom->rmass[i], mj = atom->rmass[j];
   const double qi = r * hscale[i][0], qj = r * hscale[j][0];
-  double dwi = 0.0, dwj = 0.0;
+  double dwi = 0.0, dwj = 0.0, wi = 0.0, wj = 0.0;
   if (qi < support) {
     // rho_i += m_j W(r, h_i); dW/dh = -(d W + r dW/dr) / h (doc/pair_cell_sph.md)
     const double f = CellKernel::shape<KERNEL>(qi), g = CellKernel::slope<KERNEL>(qi);
+    wi = f;
     rhoi += mj * hscale[i][1] * f;
     dsumi -= mj * hscale[i][1] * hscale[i][0] * (dim * f + qi * qi * g);
     dwi = hscale[i][2] * g;
   }
   if (qj < support) {
     const double f = CellKernel::shape<KERNEL>(qj), g = CellKernel::slope<KERNEL>(qj);
+    wj = f;
     if (force->newton_pair || j < atom->nlocal) {
       atom->dvector[irho][j] += mi * hscale[j][1] * f;
       dsum[j] -= mi * hscale[j][1] * hscale[j][0] * (dim * f + qj * qj * g);
@@ -653,6 +720,10 @@ inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k,
   }
   pairdw[k] = mi * mj * dwi;
   pairdwj[k] = mi * mj * dwj;
+  if (tensile > 0.0) {
+    pairw[k] = wi;
+    pairwj[k] = wj;
+  }
   // viscosity with the mean of the two kernels' gradients (doc/pair_cell_sph.md)
   if (VISCOUS) pairmu[k] = 0.5 * mu2 * (pairdw[k] + pairdwj[k]);
 }
@@ -702,6 +773,10 @@ void PairCellSPH::grow_pairs(int n)
     memory->grow(pairr, maxpairs, "pair:pairr");
   }
   memory->grow(pairmu, maxpairs, "pair:pairmu");
+  if (tensile > 0.0) {
+    memory->grow(pairw, maxpairs, "pair:pairw");
+    if (hmode != HFIXED) memory->grow(pairwj, maxpairs, "pair:pairwj");
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -1159,10 +1234,11 @@ void PairCellSPH::apply_eos()
 
 /* ----------------------------------------------------------------------
    pressure and viscous forces over the pairs of sum_density(); the virial is tallied per pair,
-   the energy is the equation-of-state energy of apply_eos()
+   the energy is the equation-of-state energy of apply_eos(); TENSILE: with the artificial stress
+   (not a gradient of that energy)
 ------------------------------------------------------------------------- */
 
-template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
+template <int VISCOUS, int EVFLAG, int PERATOM, int TENSILE> void PairCellSPH::sum_forces()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -1191,8 +1267,17 @@ template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
       const double delz = ztmp - x[j][2];
       // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4); per-atom h:
       // -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i W(h_j))
-      const double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
-                                    : -pairdw[k] * (prho2i + prho2[j]);
+      double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
+                              : -pairdw[k] * (prho2i + prho2[j]);
+      if (TENSILE) {
+        // artificial stress: -m_i m_j (R_i f_i^n + R_j f_j^n) grad_i W_ij, f = W_ij / W(dp)
+        // (doc/pair_cell_sph.md, eq. T2); per-atom h: each term at its atom's h
+        if (PERATOM)
+          fpress -= pairdw[k] * stress[i] * power_n(pairw[k], tensile_n) +
+              pairdwj[k] * stress[j] * power_n(pairwj[k], tensile_n);
+        else
+          fpress -= pairdw[k] * (stress[i] + stress[j]) * power_n(pairw[k], tensile_n);
+      }
       double fx = delx * fpress;
       double fy = dely * fpress;
       double fz = delz * fpress;
@@ -1254,6 +1339,7 @@ void PairCellSPH::allocate()
 /* ----------------------------------------------------------------------
    pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [eos linear|tait]
                        [h fixed|mass <eta>|adaptive <eta>] [temp <T>] [Tref <T0>]
+                       [shift <A>] [tensile <eps> [n <n>] [dp <length>]]
 ------------------------------------------------------------------------- */
 
 // the range of the Vogel correlation of the viscosity of water
@@ -1275,6 +1361,12 @@ void PairCellSPH::settings(int narg, char **arg)
   tref = TREF_DEFAULT;
   muscale = 1.0;
   shift = 0.0;
+  tensile = 0.0;
+  tensile_n = 4;
+  tensile_dp = 0.0;
+  // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
+  // (h mode, tensile)
+  maxpairs = 0;
   if (narg > 0 && utils::is_double(arg[0])) {
     cut_global = utils::numeric(FLERR, arg[0], false, lmp);
     if (cut_global <= 0.0)
@@ -1332,6 +1424,28 @@ void PairCellSPH::settings(int narg, char **arg)
       shift = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(shift >= 0.0))
         error->all(FLERR, "Pair style cell/sph: shift A = {} must be >= 0", shift);
+    } else if (strcmp(arg[iarg], "tensile") == 0) {
+      tensile = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(tensile >= 0.0))
+        error->all(FLERR, "Pair style cell/sph: tensile eps = {} must be >= 0", tensile);
+      // optional n <n> and dp <length> after eps
+      while (iarg + 2 < narg &&
+             (strcmp(arg[iarg + 2], "n") == 0 || strcmp(arg[iarg + 2], "dp") == 0)) {
+        if (iarg + 3 >= narg)
+          error->all(FLERR, "Pair style cell/sph: tensile keyword '{}' needs a value",
+                     arg[iarg + 2]);
+        if (strcmp(arg[iarg + 2], "n") == 0) {
+          const double n = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+          if (!(n >= 1.0) || n != std::floor(n) || n > 16.0)
+            error->all(FLERR, "Pair style cell/sph: tensile n = {} must be an integer 1-16", n);
+          tensile_n = static_cast<int>(n);
+        } else {
+          tensile_dp = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+          if (!(tensile_dp > 0.0))
+            error->all(FLERR, "Pair style cell/sph: tensile dp = {} must be > 0", tensile_dp);
+        }
+        iarg += 2;
+      }
     } else if (strcmp(arg[iarg], "kernel") == 0) {
       kernel = CellKernel::parse(value);
       if (kernel < 0)
@@ -1349,7 +1463,7 @@ void PairCellSPH::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos', "
-                 "'h', 'temp', 'Tref' or 'shift')",
+                 "'h', 'temp', 'Tref', 'shift' or 'tensile')",
                  arg[iarg]);
     }
     iarg += 2;
@@ -1679,6 +1793,10 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   if (len > 0) fwrite(temp.name.data(), sizeof(char), len, fp);
   // version 5: shift
   fwrite(&shift, sizeof(double), 1, fp);
+  // version 6: tensile eps, n, dp
+  fwrite(&tensile, sizeof(double), 1, fp);
+  fwrite(&tensile_n, sizeof(int), 1, fp);
+  fwrite(&tensile_dp, sizeof(double), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1718,6 +1836,15 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   shift = 0.0;
   if (comm->me == 0 && restart_version >= 5)
     utils::sfread(FLERR, &shift, sizeof(double), 1, fp, nullptr, error);
+  // tensile from version 6 on; older files had none (off)
+  tensile = 0.0;
+  tensile_n = 4;
+  tensile_dp = 0.0;
+  if (comm->me == 0 && restart_version >= 6) {
+    utils::sfread(FLERR, &tensile, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &tensile_n, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &tensile_dp, sizeof(double), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -1729,6 +1856,9 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&temp.value, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&tref, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&shift, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&tensile, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&tensile_n, 1, MPI_INT, 0, world);
+  MPI_Bcast(&tensile_dp, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);
@@ -1768,8 +1898,9 @@ void PairCellSPH::write_data_all(FILE *fp)
 }
 
 /* ----------------------------------------------------------------------
-   conservative pressure force between atoms i and j from their stored rho and pressure;
-   energy 0: the equation-of-state energy is per atom, not per pair
+   pressure force between atoms i and j from their stored rho and pressure (with tensile: and
+   the artificial stress of the last compute()); energy 0: the equation-of-state energy is per
+   atom, not per pair
 ------------------------------------------------------------------------- */
 
 double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
@@ -1786,15 +1917,23 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
     const double *omega = atom->dvector[iomega];
     const double r = sqrt(rsq), support = CellKernel::support(kernel);
     for (int k : {i, j})
-      if (r < support * hv[k])
-        fforce -= atom->rmass[i] * atom->rmass[j] * pressure[k] / (omega[k] * rho[k] * rho[k]) *
-            CellKernel::dWr(kernel, CellKernel::scale(kernel, domain->dimension, hv[k]), r);
+      if (r < support * hv[k]) {
+        const CellKernel::Scale sk = CellKernel::scale(kernel, domain->dimension, hv[k]);
+        double pk = pressure[k] / (omega[k] * rho[k] * rho[k]);
+        if (tensile > 0.0)
+          pk += stress[k] * power_n(CellKernel::W(kernel, {sk.invh, 1.0, 1.0}, r), tensile_n);
+        fforce -= atom->rmass[i] * atom->rmass[j] * pk * CellKernel::dWr(kernel, sk, r);
+      }
     return 0.0;
   }
   // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (doc/model.md §3.4)
-  fforce = -atom->rmass[i] * atom->rmass[j] *
-      (pressure[i] / (rho[i] * rho[i]) + pressure[j] / (rho[j] * rho[j])) *
-      CellKernel::dWr(kernel, p.scale, sqrt(rsq));
+  const double r = sqrt(rsq);
+  double pij = pressure[i] / (rho[i] * rho[i]) + pressure[j] / (rho[j] * rho[j]);
+  // the artificial stress (doc/pair_cell_sph.md, eq. T2)
+  if (tensile > 0.0)
+    pij += (stress[i] + stress[j]) *
+        power_n(CellKernel::W(kernel, {p.scale.invh, 1.0, 1.0}, r), tensile_n);
+  fforce = -atom->rmass[i] * atom->rmass[j] * pij * CellKernel::dWr(kernel, p.scale, r);
   return 0.0;
 }
 
@@ -1954,6 +2093,7 @@ double PairCellSPH::memory_usage()
 {
   double bytes = Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
+  if (tensile > 0.0) bytes += (nmax + (hmode != HFIXED ? 2.0 : 1.0) * maxpairs) * sizeof(double);
   if (hmode != HFIXED)
     bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
         step.capacity() * sizeof(double);

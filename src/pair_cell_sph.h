@@ -70,6 +70,17 @@ class PairCellSPH : public Pair {
   double **gradc;    // grad C_i of the kernel concentration C_i (owned and ghost atoms)
   void shift_atoms();
 
+  // artificial stress (pair_style keyword tensile eps [n N] [dp length]; Monaghan 2000): in
+  // tension each fluid atom's P_i/rho_i^2 gains R_i f_i^n, R_i = eps |P_i|/rho_i^2 for P_i < 0,
+  // f_i = f(r_ij/h)/f(dp_i/h_i) of the kernel shape f (doc/pair_cell_sph.md, tensile instability)
+  double tensile;       // eps, 0 = off
+  int tensile_n;        // n
+  double tensile_dp;    // dp (m), 0: the atom's spacing (m_i/rho0)^(1/d) or h_i/eta
+  double *stress;       // R_i / f(dp_i/h_i)^n of owned and ghost fluid atoms, f the kernel shape
+  double *pairw;        // with tensile: f(r_ij/h) of each pair (per-atom h: at h_i)
+  double *pairwj;       // per-atom h with tensile: f(r_ij/h_j)
+  void artificial_stress();
+
   struct PairConst {
     double cutsq;               // (kernel support)^2; 0 if the pair is not computed
     CellKernel::Scale scale;    // kernel constants at this pair's h (the fluid's for a boundary)
@@ -160,7 +171,7 @@ class PairCellSPH : public Pair {
   void destroy_peratom();
   void unstable(int) const;
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
-  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
+  template <int VISCOUS, int EVFLAG, int PERATOM, int TENSILE> void sum_forces();
   template <int KERNEL, int VISCOUS>
   void peratom_pair(int, int, double, double, int, double &, double &);
   template <int KERNEL, int VISCOUS> void resum_density();

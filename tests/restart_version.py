@@ -6,6 +6,8 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
+  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 in the
+                                               layout of version 5 (no tensile eps, n, dp)
 
 STYLE is cell/sph, cell/wall, cell/neohookean, cell/lamella, cell/turgor or cell/bending
 (unversioned: not cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/lamella or
@@ -63,6 +65,17 @@ def turgor_to_version2(data, at, version):
     struct.pack_into("=d", data, at, -2.0)
 
 
+def sph_to_version5(data, at):
+    """Drop the version-6 settings (tensile eps double, n int, dp double) of the pair cell/sph
+    payload whose marker is at offset at: after the marker, kernel eos (int), cutoff (double),
+    hmode (int), eta (double), temp flag (int), T, Tref (double), name length (int), name, shift
+    (double) come first."""
+    (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
+    start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
+    del data[start:start + 8 + 4 + 8]
+    struct.pack_into("=i", data, at, -5)
+
+
 def main():
     if len(sys.argv) < 5 or sys.argv[3] not in ("newer", "unversioned", "older"):
         sys.exit(__doc__)
@@ -70,14 +83,19 @@ def main():
     data = bytearray(open(src, "rb").read())
     for style in styles:
         if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/lamella", "cell/bending")) or (
-                mode == "older" and style != "cell/turgor"):
+                mode == "older" and style not in ("cell/turgor", "cell/sph")):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
         version = int(round(-marker))
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5):
             turgor_to_version2(data, at, version)
-        if mode == "older":
+        if style == "cell/sph" and mode == "older":
+            if version != 6:
+                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6")
+            sph_to_version5(data, at)
+            print(f"restart_version.py: {style} payload version {version} -> 5")
+        elif mode == "older":
             print(f"restart_version.py: {style} payload version {version} -> 2")
         elif mode == "newer":
             struct.pack_into(fmt, data, at, type(marker)(-(version + 1)))
