@@ -10,6 +10,7 @@
 #include "compute_cell_props.h"
 
 #include "atom.h"
+#include "cell_compat.h"
 #include "cell_reduce.h"
 #include "cell_water.h"
 #include "comm.h"
@@ -70,8 +71,13 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
       walltype = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
     else if (strcmp(arg[iarg], "turgor") == 0)
       measure = arg[iarg + 1];
-    else
-      error->all(FLERR, "Compute cell/props: unknown keyword '{}' (expected fluid, wall or turgor)",
+    else if (strcmp(arg[iarg], "held") == 0) {
+      held_flag = CellCompat::logical(arg[iarg + 1]);
+      if (held_flag < 0)
+        error->all(FLERR, "Compute cell/props: held = {} (expected yes or no)", arg[iarg + 1]);
+    } else
+      error->all(FLERR,
+                 "Compute cell/props: unknown keyword '{}' (expected fluid, wall, turgor or held)",
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/props", igroup, fluidtype, walltype);
@@ -84,8 +90,10 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
   size_array_cols = NCOLUMN;
   extarray = 0;
   memory->create(array, size_array_rows, size_array_cols, "cell/props:array");
-  // the wall triangles held at the last evaluation (doc/compute_cell_props.md)
-  vector_flag = 1;
+  // with held yes: the wall triangles held at the last evaluation (doc/compute_cell_props.md);
+  // off by default, since a global vector beside the array changes what c_ID[j] means in a
+  // vector-style variable in 29 Sep 2021 (the vector's element) but not in later releases
+  vector_flag = held_flag;
   size_vector = 3;
   extvector = 0;
   vector = held;

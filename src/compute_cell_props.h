@@ -62,7 +62,8 @@ class ComputeCellProps : public Compute {
   std::vector<double> away, got;        // fluid positions sent to, received from the homes
   std::vector<double> outside, rows;    // per home cell: fluid atoms outside, rows of the array
   std::vector<double> all;              // every cell's row
-  double held[3];                       // the vector: wall triangles held
+  double held[3];                       // the vector (held yes): wall triangles held
+  int held_flag = 0;                    // held yes: the vector is on
 
   bool homes_checked;    // the fixes cell/turgor give each cell the same home rank
 

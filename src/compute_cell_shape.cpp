@@ -9,6 +9,7 @@
 
 #include "compute_cell_shape.h"
 
+#include "cell_compat.h"
 #include "cell_hull.h"
 #include "cell_reduce.h"
 #include "cell_section.h"
@@ -57,8 +58,13 @@ ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
       offset = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     else if (strcmp(arg[iarg], "wall") == 0)
       walltype = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-    else
-      error->all(FLERR, "Compute cell/shape: unknown keyword '{}' (expected plane, offset or wall)",
+    else if (strcmp(arg[iarg], "held") == 0) {
+      held_flag = CellCompat::logical(arg[iarg + 1]);
+      if (held_flag < 0)
+        error->all(FLERR, "Compute cell/shape: held = {} (expected yes or no)", value);
+    } else
+      error->all(FLERR,
+                 "Compute cell/shape: unknown keyword '{}' (expected plane, offset, wall or held)",
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/shape", igroup, 0, walltype, false);
@@ -70,8 +76,10 @@ ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
   size_array_cols = NCOLUMN;
   extarray = 0;
   memory->create(array, size_array_rows, size_array_cols, "cell/shape:array");
-  // the wall triangles held at the last evaluation (doc/compute_cell_shape.md)
-  vector_flag = 1;
+  // with held yes: the wall triangles held at the last evaluation (doc/compute_cell_shape.md);
+  // off by default, since a global vector beside the array changes what c_ID[j] means in a
+  // vector-style variable in 29 Sep 2021 (the vector's element) but not in later releases
+  vector_flag = held_flag;
   size_vector = 3;
   extvector = 0;
   vector = held;

@@ -54,7 +54,8 @@ class ComputeCellShape : public Compute {
   double offset;
   std::vector<double> mine, rows, all;    // this rank's triangles, home cells' rows, every row
   std::vector<tagint> corners;
-  double held[3];    // the vector: wall triangles held (CellReduce::held_triangles)
+  double held[3];       // the vector (held yes): wall triangles held (CellReduce::held_triangles)
+  int held_flag = 0;    // held yes: the vector is on
 
   void measure(int h, double *row);
 };
