@@ -11,8 +11,10 @@
 #include "error.h"
 #include "input.h"
 #include "pointers.h"
+#include "utils.h"
 #include "variable.h"
 
+#include <cstring>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -21,6 +23,13 @@ struct CellQuantity {
   double value = 0.0;    // the number, when name is empty
   std::string name;      // equal-style variable name (without v_), or empty
   int ivar = -1;         // its index, from resolve()
+
+  // a number or v_name, as given to a style; the variable is looked up later, by resolve()
+  static CellQuantity parse(LAMMPS *lmp, const char *arg)
+  {
+    if (strncmp(arg, "v_", 2) == 0) return CellQuantity{0.0, arg + 2, -1};
+    return CellQuantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
+  }
 
   bool is_variable() const { return !name.empty(); }
 

@@ -34,10 +34,8 @@ FixCellPressure::FixCellPressure(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix cell/pressure needs wall triangles stored as angles (atom_style angle, "
                "molecular or full)");
-  if (strncmp(arg[3], "v_", 2) == 0)
-    source.name = arg[3] + 2;
-  else
-    pressure = utils::numeric(FLERR, arg[3], false, lmp);
+  source = CellQuantity::parse(lmp, arg[3]);
+  pressure = source.value;
   if (narg == 6) {
     if (strcmp(arg[4], "angletype") != 0)
       error->all(FLERR, "Fix cell/pressure: unknown keyword '{}' (expected angletype)", arg[4]);

@@ -1397,13 +1397,10 @@ void PairCellSPH::settings(int narg, char **arg)
       }
     } else if (strcmp(arg[iarg], "temp") == 0) {
       temp_set = 1;
-      if (value.compare(0, 2, "v_") == 0) {
-        temp.name = value.substr(2);
-        if (temp.name.empty())
-          error->all(FLERR, "Pair style cell/sph: temp '{}' names no variable", value);
-      } else {
-        temp.name.clear();
-        temp.value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (value == "v_")
+        error->all(FLERR, "Pair style cell/sph: temp '{}' names no variable", value);
+      temp = CellQuantity::parse(lmp, arg[iarg + 1]);
+      if (!temp.is_variable()) {
         if (!vogel_range(temp.value))
           error->all(FLERR,
                      "Pair style cell/sph: temperature T = {} K is outside {}-{} K (0-370 C), the "
