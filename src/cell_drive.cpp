@@ -36,7 +36,7 @@ int CellDrive::parse(int narg, char **arg, double tref)
   if (key != "psi" && key != "air" && key != "curve" && key != "temp") return 0;
   const char *value = CellArgs::values(error, command, narg, arg, 1)[0];
   if (key == "temp") {
-    temp = CellQuantity::parse(lmp, value);
+    temp = CellQuantity::parse(lmp, value, command + ": temp");
     if (temp.name.empty() && !(temp.value > 0.0))
       error->all(FLERR, "{}: temperature T = {} K must be > 0", command, temp.value);
     temp_set = 1;
@@ -44,28 +44,28 @@ int CellDrive::parse(int narg, char **arg, double tref)
   }
   drives += " " + key;
   if (key == "psi") {
-    psi = CellQuantity::parse(lmp, value);
+    psi = CellQuantity::parse(lmp, value, command + ": psi");
     return 2;
   }
   if (key == "curve") {
-    curve = CellQuantity::parse(lmp, value);
+    curve = CellQuantity::parse(lmp, value, command + ": curve");
     if (curve.name.empty())
       error->all(FLERR, "{}: curve = {} must be an equal-style variable v_name", command, value);
     kind = CURVE;
     return 2;
   }
   char **v = CellArgs::values(error, command, narg, arg, 3);
-  air_t = CellQuantity::parse(lmp, v[0]);
-  air_rh = CellQuantity::parse(lmp, v[1]);
+  air_t = CellQuantity::parse(lmp, v[0], command + ": air T");
+  air_rh = CellQuantity::parse(lmp, v[1], command + ": air RH");
   int used = 4;
   air_flow = strcmp(v[2], "flow") == 0;
   if (air_flow) {
     v = CellArgs::values(error, command, narg, arg, 5);
-    air_speed = CellQuantity::parse(lmp, v[3]);
-    air_length = CellQuantity::parse(lmp, v[4]);
+    air_speed = CellQuantity::parse(lmp, v[3], command + ": air flow U");
+    air_length = CellQuantity::parse(lmp, v[4], command + ": air flow L");
     used = 6;
   } else {
-    air_hm = CellQuantity::parse(lmp, v[2]);
+    air_hm = CellQuantity::parse(lmp, v[2], command + ": air hm");
   }
   // numbers are checked now, variables at every transfer (placeholders pass the check)
   const double t0 = air_t.name.empty() ? air_t.value : tref;
@@ -116,7 +116,7 @@ void CellDrive::modify_psi(const char *arg)
   if (kind != PSI)
     error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
                kind == AIR ? "air" : "curve");
-  psi = CellQuantity::parse(lmp, arg);
+  psi = CellQuantity::parse(lmp, arg, "Fix_modify cell/turgor: psi");
   psi.resolve(lmp, command + ": variable");
 }
 

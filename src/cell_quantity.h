@@ -24,9 +24,11 @@ struct CellQuantity {
   std::string name;      // equal-style variable name (without v_), or empty
   int ivar = -1;         // its index, from resolve()
 
-  // a number or v_name, as given to a style; the variable is looked up later, by resolve()
-  static CellQuantity parse(LAMMPS *lmp, const char *arg)
+  // a number or v_name, as given to a style; the variable is looked up later, by resolve();
+  // 'what' names the input in the error messages, e.g. "Fix cell/turgor: psi"
+  static CellQuantity parse(LAMMPS *lmp, const char *arg, const std::string &what)
   {
+    if (strcmp(arg, "v_") == 0) lmp->error->all(FLERR, "{} = v_ names no variable", what);
     if (strncmp(arg, "v_", 2) == 0) return CellQuantity{0.0, arg + 2, -1};
     return CellQuantity{utils::numeric(FLERR, arg, false, lmp), "", -1};
   }

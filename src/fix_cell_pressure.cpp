@@ -34,7 +34,7 @@ FixCellPressure::FixCellPressure(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix cell/pressure needs wall triangles stored as angles (atom_style angle, "
                "molecular or full)");
-  source = CellQuantity::parse(lmp, arg[3]);
+  source = CellQuantity::parse(lmp, arg[3], "Fix cell/pressure: P");
   pressure = source.value;
   if (narg == 6) {
     if (strcmp(arg[4], "angletype") != 0)

@@ -106,7 +106,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                    "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
                    v[0], v[1]);
       lcc_file = strcmp(v[0], "file") == 0;
-      if (!lcc_file) lcc = CellQuantity::parse(lmp, v[0]);
+      if (!lcc_file) lcc = CellQuantity::parse(lmp, v[0], "Fix cell/turgor: exchange L_cc");
       if (!lcc_file && !lcc.is_variable() && lcc.value < 0.0)
         error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0",
                    lcc.value);

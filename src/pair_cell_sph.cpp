@@ -1397,9 +1397,7 @@ void PairCellSPH::settings(int narg, char **arg)
       }
     } else if (strcmp(arg[iarg], "temp") == 0) {
       temp_set = 1;
-      if (value == "v_")
-        error->all(FLERR, "Pair style cell/sph: temp '{}' names no variable", value);
-      temp = CellQuantity::parse(lmp, arg[iarg + 1]);
+      temp = CellQuantity::parse(lmp, arg[iarg + 1], "Pair style cell/sph: temp");
       if (!temp.is_variable()) {
         if (!vogel_range(temp.value))
           error->all(FLERR,
