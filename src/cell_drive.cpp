@@ -111,8 +111,8 @@ void CellDrive::check(double tref)
                kind == PSI ? "psi" : "curve");
   if (cooling && temp_set)
     error->all(FLERR,
-               "{}: cooling sets the cells' temperature to that of their surface: give cooling "
-               "or temp, not both",
+               "{}: cooling sets the temperature of the cells to that of their surface: give "
+               "cooling or temp, not both",
                command);
   if (cooling && !air_t.is_variable()) check_cooling(air_t.value);
   // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
