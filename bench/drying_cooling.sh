@@ -17,14 +17,14 @@
 #     area of its top face, (M0 - M) / (t A_box), against apple's 0.08-0.4 g m^-2 s^-1.
 #   bash bench/drying_cooling.sh
 # Environment: CELLSPH_BUILD (build folder), WORK (work folder, kept and reused; default a new
-# temporary one), MAXOUT (cell: drying intervals of 100 steps, default 3), TSTEPS (tissue drying
+# temporary one), MAXOUT (cell: drying intervals of 100 steps, default 20), TSTEPS (tissue drying
 # steps, default 200), NP (ranks of the LAMMPS runs, default 1).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
 work=${WORK:-$(mktemp -d)}
 np=${NP:-1}
-maxout=${MAXOUT:-3}
+maxout=${MAXOUT:-20}
 tsteps=${TSTEPS:-200}
 mkdir -p "$work"
 cd "$work"
