@@ -331,8 +331,9 @@ void FixCellTurgor::evaluate(bool transfer)
     cells->registry().settle(failure.cell, failure.message, warnings);
     drive.cool([&]() {
       const double t = drive.temperature;
+      // rho_w L_P(T), as in the loop below
       const double gw =
-          rhow * lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0);
+          rhow * (lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0));
       double sums[2] = {0.0, 0.0}, all[2];
       for (int h = 0; h < (int) home.size(); h++) {
         const int c = home[h];
