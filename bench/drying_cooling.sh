@@ -141,7 +141,7 @@ for c in ("no", "yes"):
         text = open(f"tissue_{c}/log.lammps").read()
     except OSError:
         continue
-    box = re.search(r"box (\S+) x (\S+) m,", text)
+    box = re.search(r"box ([0-9.e+-]+) x ([0-9.e+-]+) m,", text)
     area = float(box.group(1)) * float(box.group(2))
     lines = text.splitlines()
     head = [i for i, l in enumerate(lines) if l.split()[:3] == ["Step", "CPU", "v_t"]]
