@@ -1,7 +1,8 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor's external drive: psi_ext, air (h_m or a laminar flow) or a drying curve, and
-   the cell temperature (doc/model.md §5.1, §5.7-5.10)
+   the cell temperature, given or (cooling) that of the exposed surface's heat balance
+   (doc/model.md §5.1, §5.7-5.10, §5.14)
 ------------------------------------------------------------------------- */
 
 #include "cell_drive.h"
@@ -11,6 +12,7 @@
 #include "group.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -18,8 +20,8 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 CellDrive::CellDrive(LAMMPS *lmp, const std::string &command) :
-    Pointers(lmp), kind(PSI), surface_group(-1), temperature(0.0), mass_transfer(0.0), psi_ext(0.0),
-    target(0.0),
+    Pointers(lmp), kind(PSI), cooling(0), surface_group(-1), temperature(0.0), mass_transfer(0.0),
+    psi_ext(0.0), target(0.0), air_temperature(0.0),
     command(command), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
     air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
     air_flow(0), temp_set(0), area_fraction(1.0), hm(0.0), rho_sat(0.0), rho_air(0.0)
@@ -27,14 +29,21 @@ CellDrive::CellDrive(LAMMPS *lmp, const std::string &command) :
 }
 
 /* ----------------------------------------------------------------------
-   psi value, air T RH hm|flow U L [area f] [surface group-ID], curve v_name, temp T
+   psi value, air T RH hm|flow U L [area f] [surface group-ID], curve v_name, temp T,
+   cooling yes|no
 ------------------------------------------------------------------------- */
 
 int CellDrive::parse(int narg, char **arg, double tref)
 {
   const std::string key = arg[0];
-  if (key != "psi" && key != "air" && key != "curve" && key != "temp") return 0;
+  if (key != "psi" && key != "air" && key != "curve" && key != "temp" && key != "cooling") return 0;
   const char *value = CellArgs::values(error, command, narg, arg, 1)[0];
+  if (key == "cooling") {
+    if (strcmp(value, "yes") != 0 && strcmp(value, "no") != 0)
+      error->all(FLERR, "{}: cooling = {} must be yes or no", command, value);
+    cooling = strcmp(value, "yes") == 0;
+    return 2;
+  }
   if (key == "temp") {
     temp = CellQuantity::parse(lmp, value, command + ": temp");
     if (temp.name.empty() && !(temp.value > 0.0))
@@ -97,6 +106,15 @@ void CellDrive::check(double tref)
 {
   if (drives.find(' ', 1) != std::string::npos)
     error->all(FLERR, "{}: give one drive of psi, air and curve, not{}", command, drives);
+  if (cooling && kind != AIR)
+    error->all(FLERR, "{}: cooling needs the air drive (this fix has {})", command,
+               kind == PSI ? "psi" : "curve");
+  if (cooling && temp_set)
+    error->all(FLERR,
+               "{}: cooling sets the temperature of the cells to that of their surface: give "
+               "cooling or temp, not both",
+               command);
+  if (cooling && !air_t.is_variable()) check_cooling(air_t.value);
   // the cell is at the air's temperature unless 'temp' says otherwise; without either at Tref
   if (!temp_set) temp = kind == AIR ? air_t : CellQuantity{tref, "", -1};
 }
@@ -129,7 +147,7 @@ void CellDrive::evaluate(double &time, double advance)
     error->all(FLERR, "{}: temperature T = {} K must be > 0 (step {})", command, t,
                update->ntimestep);
   temperature = t;
-  psi_ext = hm = rho_sat = rho_air = target = 0.0;
+  psi_ext = hm = rho_sat = rho_air = target = air_temperature = 0.0;
   if (kind == PSI) {
     psi_ext = psi.get(lmp);
   } else if (kind == AIR) {
@@ -137,13 +155,13 @@ void CellDrive::evaluate(double &time, double advance)
     hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
     mass_transfer = hm;
     check_air(tair, rh, hm);
+    if (cooling) check_cooling(tair);
     if (!(t < CellWater::CRITICAL_T))
       error->all(FLERR, "{}: temperature T = {} K must be below the critical point of water, {} K",
                  command, t, CellWater::CRITICAL_T);
-    rho_sat = CellWater::saturation_density(t);
+    air_temperature = tair;
     rho_air = rh * CellWater::saturation_density(tair);
-    // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
-    psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
+    surface(t);
   } else {
     time += advance;
     target = curve.get(lmp);
@@ -151,6 +169,91 @@ void CellDrive::evaluate(double &time, double advance)
       error->all(FLERR, "{}: curve X/X0 = {} must be > 0 (physical time {} s)", command, target,
                  time);
   }
+}
+
+/* ----------------------------------------------------------------------
+   the cells and their surface at T: rho_v,sat(T) and the air's water potential there
+------------------------------------------------------------------------- */
+
+void CellDrive::surface(double t)
+{
+  temperature = t;
+  rho_sat = CellWater::saturation_density(t);
+  // the water potential of the air at the surface temperature: (R T / V_w) ln(rho_air/rho_sat)
+  psi_ext = CellWater::kelvin_potential(rho_air / rho_sat, t);
+}
+
+/* ----------------------------------------------------------------------
+   cooling: the surface temperature T_s of the quasi-steady heat balance of the exposed surface,
+   b(T) = h_c (T_air - T) - lambda(T) J(T) = 0, convection from the air supplying the latent heat
+   of the vapour flux (doc/model.md §5.14). b falls with T (J rises with rho_v,sat); the root lies
+   in [dew point, T_air] when the cells dry (b(T_air) <= 0; at the dew point J <= 0 for a_s <= 1),
+   else in [T_air, T_air + lambda h_m rho_air / h_c] (J >= -h_m rho_air). Illinois false position,
+   from the same bracket at every evaluation (no state carried between transfers)
+------------------------------------------------------------------------- */
+
+void CellDrive::cool(const std::function<double()> &mean_flux)
+{
+  const double tair = air_temperature;
+  const double hc = CellWater::heat_transfer(tair, hm);
+  // b(T) = h_c (T_air - T) - lambda(T) J(T) with the drive at T (doc/model.md §5.14)
+  auto balance = [&](double t) {
+    surface(t);
+    return hc * (tair - t) - CellWater::latent_heat(t) * mean_flux();
+  };
+  double lo = tair, hi = tair, blo = balance(tair), bhi = blo;
+  if (blo == 0.0) return;
+  if (bhi < 0.0) {
+    lo = CellWater::dew_point(rho_air, tair);
+    blo = balance(lo);
+    // a cell above full hydration (a_s > 1) still evaporates at the dew point: go lower
+    while (blo < 0.0 && lo > CellWater::TRIPLE_T) {
+      lo = std::max(CellWater::TRIPLE_T, lo - (tair - lo) - 1.0);
+      blo = balance(lo);
+    }
+  } else {
+    hi = std::min(tair + CellWater::latent_heat(tair) * hm * rho_air / hc,
+                  0.99 * CellWater::CRITICAL_T);
+    bhi = balance(hi);
+  }
+  if (!(blo >= 0.0 && bhi <= 0.0))
+    error->all(FLERR,
+               "{}: cooling finds no surface temperature between {} and {} K that balances the "
+               "heat of the vapour flux (air at T = {} K, h_c = {} W/m^2/K; step {})",
+               command, lo, hi, tair, hc, update->ntimestep);
+  double t = hi, bt = bhi;
+  int side = 0;
+  for (int iter = 0; iter < 200 && bt != 0.0 && hi - lo > 1e-12 * tair; iter++) {
+    t = hi - bhi * (hi - lo) / (bhi - blo);
+    if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+    bt = balance(t);
+    // Illinois: halve the value at the end that stays twice in a row
+    if (bt > 0.0) {
+      lo = t;
+      blo = bt;
+      if (side > 0) bhi *= 0.5;
+      side = 1;
+    } else {
+      hi = t;
+      bhi = bt;
+      if (side < 0) blo *= 0.5;
+      side = -1;
+    }
+  }
+  if (temperature != t) surface(t);
+}
+
+/* ----------------------------------------------------------------------
+   cooling: the air temperature within the range of the heat balance's properties
+------------------------------------------------------------------------- */
+
+void CellDrive::check_cooling(double t) const
+{
+  if (!(t > CellWater::TRIPLE_T && t < CellWater::COOLING_TMAX))
+    error->all(FLERR,
+               "{}: air temperature T = {} K is outside {}-{} K, the range of cooling (liquid "
+               "water, the vapour diffusivity in air behind h_c)",
+               command, t, CellWater::TRIPLE_T, CellWater::COOLING_TMAX);
 }
 
 /* ----------------------------------------------------------------------

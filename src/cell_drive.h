@@ -2,8 +2,9 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor's external drive (doc/model.md §5.1, §5.7-5.10): the cell temperature T and one
    of a water potential psi_ext, air of temperature, humidity and h_m (or a flow giving h_m) on
-   the exposed wall, or a prescribed drying curve X/X0(t); the keywords psi, air, curve and temp.
-   evaluate() takes the inputs of one evaluation, flux() gives one cell's water flux from them.
+   the exposed wall, or a prescribed drying curve X/X0(t); the keywords psi, air, curve, temp and
+   cooling. evaluate() takes the inputs of one evaluation, flux() gives one cell's water flux from
+   them; with cooling, cool() sets T to the surface temperature of the heat balance (§5.14).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_DRIVE_H
@@ -13,6 +14,7 @@
 #include "cell_water.h"
 #include "pointers.h"
 
+#include <functional>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -35,6 +37,10 @@ class CellDrive : protected Pointers {
   // T and the drive's inputs at the physical time 'time' (the fix's f_ID[2]) of the start of a
   // transfer; the curve's X/X0 at its end: time advances by 'advance' after T, before X/X0
   void evaluate(double &time, double advance);
+  // cooling (after evaluate): T = T_s, the root of h_c (T_air - T_s) = lambda(T_s) J(T_s) in
+  // [dew point, T_air] (above T_air where the cells take water up), J(T) = mean_flux() the exposed
+  // cells' mean vapour flux with the drive at T; collective when mean_flux is (doc/model.md §5.14)
+  void cool(const std::function<double()> &mean_flux);
 
   // a cell's water uptake: conductance G = d(dM/dt)/d(-psi_cell), rate dM/dt and the water
   // potential just outside the wall
@@ -47,8 +53,8 @@ class CellDrive : protected Pointers {
             double dtw) const
   {
     if (kind == AIR) {
-      // wall and air film in series on the exposed area f A, or f A_surface (doc/model.md §5.8)
-      const double exposed = area_fraction * (surface_group >= 0 ? surface_area : area);
+      // wall and air film in series on the exposed area (doc/model.md §5.8)
+      const double exposed = exposed_area(area, surface_area);
       const auto air = CellWater::air_flux(psi_cell, temperature, gw, hm, rho_sat, rho_air);
       return {exposed * air.conductance, -exposed * air.flux, air.psi_surface};
     }
@@ -61,12 +67,20 @@ class CellDrive : protected Pointers {
     return {0.0, (target * mass0 - mass) / dtw, psi_cell};
   }
 
+  // the area of a cell that faces the air: f A, or f A_surface with 'surface' (doc/model.md §5.8)
+  double exposed_area(double area, double surface_area) const
+  {
+    return area_fraction * (surface_group >= 0 ? surface_area : area);
+  }
+
   int kind;
+  int cooling;             // 'cooling yes': T is the surface temperature of the heat balance
   int surface_group;       // 'surface': air only on the triangles of this group's atoms, or -1
   double temperature;      // cell temperature T of the last evaluation (K), 0 before
   double mass_transfer;    // h_m of the last evaluation (m/s)
   double psi_ext;          // of the last evaluation: the drive's water potential (Pa), 0 for curve
   double target;           // of the last evaluation: the curve's X/X0
+  double air_temperature;    // T_air of the last evaluation (K), 0 without air
 
  private:
   std::string command;
@@ -78,6 +92,8 @@ class CellDrive : protected Pointers {
   double hm, rho_sat, rho_air;    // h_m, rho_v,sat(T) and RH rho_v,sat(T_air) of the evaluation
 
   void check_air(double t, double rh, double hm) const;
+  void check_cooling(double t) const;
+  void surface(double t);
   double flow_transfer(double t, double u, double l) const;
 };
 

@@ -3,7 +3,8 @@
    Water outside and inside a drying cell (doc/model.md §5.7-5.10), as pure functions used by
    fix cell/turgor: Kelvin's relation, the saturation vapour density of water, the Arrhenius law
    of L_P, the GAB sorption isotherm, and the exact surface water potential of the wall in series
-   with an air film; the viscosity of liquid water (pair cell/sph).
+   with an air film; the latent heat and the air film's heat transfer of evaporative cooling; the
+   viscosity of liquid water (pair cell/sph).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_WATER_H
@@ -80,6 +81,43 @@ inline double plate_transfer(double t, double u, double l)
 {
   const double nu = air_viscosity(t) / air_density(t), d = vapour_diffusivity(t);
   return 0.664 * sqrt(reynolds(t, u, l)) * cbrt(nu / d) * d / l;
+}
+
+// evaporative cooling of the exposed surface (doc/model.md §5.14)
+constexpr double TRIPLE_T = 273.16;       // triple point of water (K): Wagner & Pruss's lower end
+constexpr double COOLING_TMAX = 450.0;    // upper end of the vapour diffusivity behind h_c (K)
+constexpr double AIR_CP = 1007.0;         // c_p of dry air (J kg^-1 K^-1), 1006-1009 at 250-350 K
+
+// latent heat of vaporisation of water (J/kg): lambda = 2.501e6 - 2361 (T - 273.15)
+// (Harrison 1963; Allen et al. 1998, FAO-56, eq. 3-1 of annex 3)
+inline double latent_heat(double t)
+{
+  return 2.501e6 - 2361.0 * (t - 273.15);
+}
+// thermal conductivity of dry air (W m^-1 K^-1), Sutherland's law k = 0.0241 (T/273)^1.5
+// (273 + 194)/(T + 194) (White, Viscous Fluid Flow, table 1-3)
+inline double air_conductivity(double t)
+{
+  return 0.0241 * pow(t / 273.0, 1.5) * (273.0 + 194.0) / (t + 194.0);
+}
+// heat-transfer coefficient of the air film from its mass-transfer coefficient h_m at the air's
+// T, Chilton-Colburn: h_c = h_m rho_a c_p,a Le^(2/3), Le = k_a / (rho_a c_p,a D)
+inline double heat_transfer(double t, double hm)
+{
+  const double rhocp = air_density(t) * AIR_CP;
+  return hm * rhocp * pow(air_conductivity(t) / (rhocp * vapour_diffusivity(t)), 2.0 / 3.0);
+}
+// the temperature in [TRIPLE_T, tmax] at which rho_v,sat(T) = rho (bisection; rho_v,sat rises
+// with T): below it a surface of activity a_s <= 1 takes water up from air of vapour density rho
+inline double dew_point(double rho, double tmax)
+{
+  double lo = TRIPLE_T, hi = tmax;
+  if (!(saturation_density(lo) < rho)) return lo;
+  while (hi - lo > 1e-12 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (saturation_density(mid) < rho ? lo : hi) = mid;
+  }
+  return hi;
 }
 
 // viscosity of liquid water (Pa s), Vogel equation mu_w = A 10^(B / (T - C)), A = 2.414e-5 Pa s,

@@ -56,8 +56,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(lmp), ea(0.0),
     osmotic_model(lmp, "Fix cell/turgor"), drive(lmp, "Fix cell/turgor"), tau(0.0), bulk(0.0),
     kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), state(lmp),
-    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0),
-    busiest(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0)
+    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0),
+    exposed_flux(0.0), exposed_area(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
+    exchange_stiffness(0.0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -190,7 +191,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = 14;
+  size_vector = 17;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -296,19 +297,16 @@ void FixCellTurgor::evaluate(bool transfer)
   // T and the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
   // X/X0(t) at its end
   drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
-  const double t = drive.temperature, psi_ext = drive.psi_ext;
-  // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
-  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
-  const double lpt = lp * arrhenius;
 
+  // the turgor that drives each home cell's flux, the cell checked and its M0 and S set
+  std::vector<double> turgors(home.size());
   for (int h = 0; h < (int) home.size(); h++) {
     const int c = home[h];
     const tagint id = cells->id(c);
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
-    const double area = cells->area(c);
     CellTurgorState::Cell &s = state[id];
-    const double turgor = flux_turgor(c, s, transfer);
+    const double turgor = turgors[h] = flux_turgor(c, s, transfer);
     if (cells->get(c, CellReduce::NFLUID) == 0.0) {
       failure = Failure{c,
                         fmt::format("Fix cell/turgor: cell {} has no fluid atoms of type {} in "
@@ -324,10 +322,47 @@ void FixCellTurgor::evaluate(bool transfer)
                                     id, update->ntimestep, turgor, volume, mass)};
       break;
     }
-
     if (s.mass0 == 0.0) s.mass0 = mass;
     // dry solids S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water
     if (s.solids == 0.0) s.solids = osmotic_model.solids(s.mass0);
+  }
+  if (drive.cooling) {
+    // the surface temperature from every cell's flux at its current state (doc/model.md §5.14)
+    cells->registry().settle(failure.cell, failure.message, warnings);
+    drive.cool([&]() {
+      const double t = drive.temperature;
+      // rho_w L_P(T), as in the loop below
+      const double gw =
+          rhow * (lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0));
+      double sums[2] = {0.0, 0.0}, all[2];
+      for (int h = 0; h < (int) home.size(); h++) {
+        const int c = home[h];
+        const CellTurgorState::Cell &s = state[cells->id(c)];
+        const double mass = cells->mass(c);
+        const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, nullptr);
+        const double area = cells->area(c), surface = cells->surface_area(c);
+        // the exposed flux f A J = -dM/dt of the air drive (doc/model.md §5.8)
+        sums[0] -= drive.flux(turgors[h] - pi, gw, area, surface, mass, s.mass0, 0.0).rate;
+        sums[1] += drive.exposed_area(area, surface);
+      }
+      MPI_Allreduce(sums, all, 2, MPI_DOUBLE, MPI_SUM, world);
+      // J = sum f A J / sum f A over the exposed cells
+      return all[1] > 0.0 ? all[0] / all[1] : 0.0;
+    });
+  }
+  const double t = drive.temperature, psi_ext = drive.psi_ext;
+  // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
+  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
+  const double lpt = lp * arrhenius;
+  double air_sums[2] = {0.0, 0.0};    // the exposed cells' vapour flux and area
+
+  for (int h = 0; h < (int) home.size() && failure.cell == cells->ncell(); h++) {
+    const int c = home[h];
+    const tagint id = cells->id(c);
+    const double mass = cells->mass(c);
+    const double area = cells->area(c);
+    CellTurgorState::Cell &s = state[id];
+    const double turgor = turgors[h];
     double slope;
     const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, &slope);
     // psi_cell = P_T - pi (doc/model.md §5.1)
@@ -337,6 +372,10 @@ void FixCellTurgor::evaluate(bool transfer)
     const double conductance = flux.conductance, rate = flux.rate;
     s.psi_surface = flux.psi_surface;
     s.rate = rate;
+    if (drive.kind == CellDrive::AIR) {
+      air_sums[0] -= rate;
+      air_sums[1] += drive.exposed_area(area, cells->surface_area(c));
+    }
     // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
     const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
     const double relax = conductance * std::max(0.0, stiffness);
@@ -388,6 +427,14 @@ void FixCellTurgor::evaluate(bool transfer)
   max_stiffness = all_most[1];
   first_accel = -all_most[2];
   busiest = all_most[3];
+  exposed_flux = exposed_area = 0.0;
+  if (drive.kind == CellDrive::AIR) {
+    double all_air[2];
+    MPI_Allreduce(air_sums, all_air, 2, MPI_DOUBLE, MPI_SUM, world);
+    exposed_area = all_air[1];
+    // the mean vapour flux over the exposed area, sum f A J / sum f A
+    exposed_flux = exposed_area > 0.0 ? all_air[0] / exposed_area : 0.0;
+  }
   if (accel.pending) max_stiffness *= accel.begin(first_accel);
   if (junctions) {
     // every cell's values from its home rank, on every rank (doc/model.md §5.2): the network is
@@ -637,16 +684,19 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
    8 accel, 9 lag e of the last accel auto window (max over cells), 10 its standard error,
    11 water moved between cells (kg), 12 the exchange's net mass change at the last transfer (kg,
    0 to round-off), 13 max dt_w g_ij (s_i + s_j) over junctions, 14 the most cells one rank
-   summed at the last evaluation
+   summed at the last evaluation, 15 the surface temperature of the air drive (K), 16 the mean
+   vapour flux over the exposed area (kg m^-2 s^-1), 17 the exposed area (m^2)
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {water_moved,         physical_time,   (double) cells->ncell(),
-                           max_imbalance,       max_stiffness,   drive.temperature,
-                           drive.mass_transfer, accel.value,     accel.lag_estimate,
-                           accel.lag_error,     water_exchanged, exchange_net,
-                           exchange_stiffness,  busiest};
+  const double values[] = {
+      water_moved,         physical_time,   (double) cells->ncell(),
+      max_imbalance,       max_stiffness,   drive.temperature,
+      drive.mass_transfer, accel.value,     accel.lag_estimate,
+      accel.lag_error,     water_exchanged, exchange_net,
+      exchange_stiffness,  busiest,         drive.kind == CellDrive::AIR ? drive.temperature : 0.0,
+      exposed_flux,        exposed_area};
   return values[n];
 }
 

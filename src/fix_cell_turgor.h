@@ -71,7 +71,8 @@ class FixCellTurgor : public Fix {
   std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
-  double busiest;    // the most cells one rank summed at the last evaluation
+  double busiest;                       // the most cells one rank summed at the last evaluation
+  double exposed_flux, exposed_area;    // air: mean vapour flux over the exposed area, the area
   // a cell's problem found on its home rank, stopping every rank (CellRegistry::settle)
   struct Failure {
     int cell;
