@@ -48,6 +48,8 @@ FixCellPressure::FixCellPressure(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extscalar = 1;
   energy_global_flag = 1;
+  virial_global_flag = 1;    // the load's virial enters compute pressure and the barostats
+  thermo_virial = 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -84,9 +86,10 @@ void FixCellPressure::min_pre_reverse(int eflag, int vflag)
    one of its atoms with newton_bond off (only owned atoms get forces)
 ------------------------------------------------------------------------- */
 
-void FixCellPressure::pre_reverse(int, int)
+void FixCellPressure::pre_reverse(int, int vflag)
 {
   if (source.is_variable()) pressure = source.get(lmp);
+  v_init(vflag);
 
   double **x = atom->x;
   double **f = atom->f;
@@ -109,12 +112,27 @@ void FixCellPressure::pre_reverse(int, int)
     const double fn[3] = {p6 * (ab[1] * ac[2] - ab[2] * ac[1]),
                           p6 * (ab[2] * ac[0] - ab[0] * ac[2]),
                           p6 * (ab[0] * ac[1] - ab[1] * ac[0])};
+    int owned = 0;
     for (int k = 0; k < 3; k++)
       if (newton_bond || i[k] < nlocal) {
         f[i[k]][0] += fn[0];
         f[i[k]][1] += fn[1];
         f[i[k]][2] += fn[2];
+        owned++;
       }
+    if (vflag_global) {
+      // virial sum_k x_k F = (x_a + x_b + x_c) F, P V I over a closed wall (doc/model.md §4.5);
+      // with newton_bond off each rank tallies the share of the vertices it owns (global only)
+      const double share = owned / 3.0;
+      const double s[3] = {share * (a[0] + b[0] + c[0]), share * (a[1] + b[1] + c[1]),
+                           share * (a[2] + b[2] + c[2])};
+      virial[0] += s[0] * fn[0];
+      virial[1] += s[1] * fn[1];
+      virial[2] += s[2] * fn[2];
+      virial[3] += s[0] * fn[1];
+      virial[4] += s[0] * fn[2];
+      virial[5] += s[1] * fn[2];
+    }
     // P V, V = (1/6) sum x_a . (x_b x x_c): divergence theorem over the closed wall
     if (newton_bond || i[0] < nlocal)
       work_local += p6 *

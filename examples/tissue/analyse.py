@@ -53,6 +53,8 @@ def main(folder):
     xslab_of = {int(r[6]): r[1] for r in slab}
     thick_of = {int(r[6]): r[2] for r in slab}
     broken_of = {int(r[6]): int(r[4]) for r in slab}
+    # the box's lateral lengths over their values when drying starts (in.tissue's lateral 1)
+    boxl_of = {int(r[6]): (r[7], r[8]) if len(r) > 8 else (1.0, 1.0) for r in slab}
     steps = [s for s in steps if s in time_of]
     box, fresh = dump("fresh.dump")
     area = (box[0][1] - box[0][0]) * (box[1][1] - box[1][0])
@@ -76,13 +78,14 @@ def main(folder):
     say(f"{n} cells in {nlayer} depth layers; box {area ** 0.5 * 1e6:.0f} um square; "
         f"slab {thick_of[s0] * 1e6:.0f} um thick at the start of drying")
     say("\n# drying curve: step, t (s), slab X/X0, thickness (um), space outside the cells, "
-        "broken junctions")
+        "broken junctions, box Lx/Lx0")
     with open("curve.dat", "w") as f:
-        f.write("# t[s] X/X0 thickness[m] space_outside_cells\n")
+        f.write("# t[s] X/X0 thickness[m] space_outside_cells Lx/Lx0\n")
         for s in steps:
-            phi = 1 - sum(r[1] for r in cells[s]) / (area * thick_of[s])
-            f.write(f"{time_of[s]:.6e} {xslab_of[s]:.6f} {thick_of[s]:.6e} {phi:.6f}\n")
-            say(f"{s} {time_of[s]:.2f} {xslab_of[s]:.4f} {thick_of[s] * 1e6:.1f} {phi:.4f} {broken_of[s]}")
+            lx, ly = boxl_of[s]
+            phi = 1 - sum(r[1] for r in cells[s]) / (area * lx * ly * thick_of[s])
+            f.write(f"{time_of[s]:.6e} {xslab_of[s]:.6f} {thick_of[s]:.6e} {phi:.6f} {lx:.6f}\n")
+            say(f"{s} {time_of[s]:.2f} {xslab_of[s]:.4f} {thick_of[s] * 1e6:.1f} {phi:.4f} {broken_of[s]} {lx:.4f}")
     # moisture profile at up to five times: each cell (points) and the layer means (lines)
     pick = [steps[round(k * (len(steps) - 1) / 4)] for k in range(5)] if len(steps) >= 5 else steps
     say("\n# moisture profile: layer mean X/X0 (layer 1 at the top) at t (s)")
@@ -155,17 +158,18 @@ unset multiplot
     # cut pictures from the dumps: x and depth of the atoms within one spacing of y = middle
     width = box[0][1] - box[0][0]
     spacing = 24e-6
-    ymid = 0.5 * (box[1][0] + box[1][1])
     for name in ("fresh", "half", "dry"):
         if not os.path.exists(f"{name}.dump"):
             continue
-        atoms = dump(f"{name}.dump")[1]
+        # each dump in its own box (the box shrinks across with lateral 1), drawn at the fresh width
+        dbox, atoms = dump(f"{name}.dump")
+        ymid = 0.5 * (dbox[1][0] + dbox[1][1])
         with open(f"cut_{name}.dat", "w") as f:
             for t in (2, 1):
                 f.write(f"# type {t}: x[um] depth below the fresh top[um]\n")
                 for a in atoms:
                     if a[1] == t and abs(a[3] - ymid) < spacing:
-                        f.write(f"{(a[2] - box[0][0]) * 1e6:.2f} {(ztop - a[4]) * 1e6:.2f}\n")
+                        f.write(f"{(a[2] - dbox[0][0]) * 1e6:.2f} {(ztop - a[4]) * 1e6:.2f}\n")
                 f.write("\n\n")
         step = int(open(f"{name}.dump").readlines()[1])
         if step in time_of:
