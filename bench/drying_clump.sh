@@ -8,14 +8,17 @@
 # the CPU time of the run. Then, for the last dump, how the clumped atoms sit on the wall
 # (bench/fluid_spacing.py --wall: the atoms of the first layer per wall atom).
 #   bash bench/drying_clump.sh ["NAME:-var k v ..." ...]
-# Default variants: h fixed and h adaptive, with and without tensile 0.2. WORK=dir keeps the runs.
+# Default variants: h fixed without tensile, with tensile 0.2 and dp from the mass (dpmass 1) or
+# dp = h/1.27 (cell.lmp's default), h adaptive with and without tensile 0.2. WORK=dir keeps (and
+# reuses) the runs.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
 work=${WORK:-$(mktemp -d)}
 variants=("$@")
 [ ${#variants[@]} -gt 0 ] || variants=("fixed,tensile0:-var hmode fixed -var tensile 0"
-  "fixed,tensile0.2:-var hmode fixed -var tensile 0.2" "adaptive,tensile0:-var hmode adaptive -var tensile 0"
+  "fixed,tensile0.2,dpmass:-var hmode fixed -var tensile 0.2 -var dpmass 1"
+  "fixed,tensile0.2,dp:-var hmode fixed -var tensile 0.2" "adaptive,tensile0:-var hmode adaptive -var tensile 0"
   "adaptive,tensile0.2:-var hmode adaptive -var tensile 0.2")
 h=18.18e-6
 reach=$(python3 -c "print($h / 2.5 + 0.45 * $h)")    # the adhesion's rc of cell.lmp
