@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# bash examples/drying/run.sh [extra lmp -var NAME VALUE pairs]
 # Drying of one turgid apple cell in hot air at 40 and 70 C (RH 0.15), in physical time, to
 # X/X0 <= 0.2 (in.drying): drying curves X/X0 against time, section descriptors and volume against
 # X/X0 with the end values of Karunasena et al. 2014 marked (analyse.py, gnuplot), pictures of the
@@ -11,6 +12,7 @@
 # shared with about twenty other processes; the seed resolution takes about 160 s of CPU time per
 # temperature on one rank.
 set -euo pipefail
+extra=("$@")    # extra lmp -var NAME VALUE pairs for in.drying, e.g. -var hmode adaptive
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
 np=${NP:-2}
@@ -50,7 +52,7 @@ for run in "${runs[@]}"; do
   set -- $run
   t0=$(date +%s)
   "${lmp[@]}" -in "$here/in.drying" -var tag "$1" -var T "$2" -var accel "$3" -var images 1 "${scale[@]}" \
-    -log "log.$1" >"$1.screen"
+    "${extra[@]}" -log "log.$1" >"$1.screen"
   stamp "$1: $(grep '^dried' "$1.screen") [$(($(date +%s) - t0)) s]"
   python3 "$here/../../tools/wall_self_intersection.py" cell.data "wall_$1.dump" --quiet --out "intersections_$1.txt" ||
     echo "[drying] $1: the wall passed through itself (intersections_$1.txt)"
