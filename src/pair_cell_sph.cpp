@@ -1604,6 +1604,14 @@ void PairCellSPH::init_style()
                  "(the wall's reactions go to ghost atoms)");
     if (!atom->num_angle)
       error->all(FLERR, "Pair cell/sph: the wall boundary needs an atom style with angles");
+    // the contact candidates kept between exact evaluations assume no atom has moved half the
+    // skin since the last build, which LAMMPS checks every step only with these settings
+    if (comm->me == 0 && (neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check))
+      error->warning(FLERR,
+                     "Pair cell/sph: the wall boundary wants neigh_modify delay 0 every 1 check "
+                     "yes (now delay {} every {} check {}; the default of LAMMPS before 3 Nov "
+                     "2022 is delay 10): atoms may move past the skin between builds",
+                     neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
     tabulate_phi();
     comm_forward = std::max(3, 1 + 2 * MAXTRI);
     edgecap = 1.5 * longest_edge() + neighbor->skin;
