@@ -17,25 +17,11 @@ of the layer and how many of them have their nearest fluid neighbour on the same
 import argparse
 import collections
 import math
+import os
+import sys
 
-
-def snapshots(path):
-    """(step, columns, rows) of each snapshot of a LAMMPS custom dump"""
-    with open(path) as f:
-        while True:
-            line = f.readline()
-            if not line:
-                return
-            if not line.startswith("ITEM: TIMESTEP"):
-                continue
-            step = int(f.readline())
-            f.readline()
-            n = int(f.readline())
-            for _ in range(4):
-                f.readline()
-            cols = f.readline().split()[2:]
-            rows = [f.readline().split() for _ in range(n)]
-            yield step, cols, rows
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from lammps_dump import snapshots  # noqa: E402
 
 
 def nearest(points, others, size):

@@ -27,6 +27,8 @@ wall that does not cross itself gives 0; a wall pushed through itself gives a po
 import math
 import sys
 
+from lammps_dump import positions, snapshots
+
 
 def read_triangles(path):
     """the wall triangles (a, b, c) of the Angles section of a LAMMPS data file"""
@@ -48,32 +50,6 @@ def read_triangles(path):
     if not tris:
         raise SystemExit(f"wall_self_intersection: {path} has no Angles section (wall triangles)")
     return tris
-
-
-def read_dump(path):
-    """yield (timestep, {id: (x, y, z)}) for each snapshot of a LAMMPS text dump"""
-    with open(path) as f:
-        lines = iter(f.read().splitlines())
-    for line in lines:
-        if not line.startswith("ITEM: TIMESTEP"):
-            continue
-        step = int(next(lines).split()[0])
-        assert next(lines).startswith("ITEM: NUMBER OF ATOMS")
-        n = int(next(lines).split()[0])
-        head = next(lines)
-        while not head.startswith("ITEM: ATOMS"):
-            head = next(lines)
-        cols = head.split()[2:]
-        try:
-            ci = cols.index("id")
-            cx = [cols.index(k) if k in cols else cols.index(k + "u") for k in ("x", "y", "z")]
-        except ValueError:
-            raise SystemExit(f"wall_self_intersection: {path} needs columns id x y z (or xu yu zu)")
-        pos = {}
-        for _ in range(n):
-            tok = next(lines).split()
-            pos[int(tok[ci])] = tuple(float(tok[c]) for c in cx)
-        yield step, pos
 
 
 def sub(a, b):
@@ -245,7 +221,8 @@ def main(argv):
         return 2
     tris = read_triangles(args[0])
     worst, nsnap = 0, 0
-    for step, pos in read_dump(args[1]):
+    for step, cols, rows in snapshots(args[1]):
+        pos = positions(cols, rows, args[1])
         missing = [i for t in tris for i in t if i not in pos]
         if missing:
             raise SystemExit(f"wall_self_intersection: step {step}: wall atom {missing[0]} not in the dump")

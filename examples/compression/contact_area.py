@@ -24,7 +24,11 @@ n: wall atoms in contact; areas (m^2) projected on the plate (the xy plane):
   A_hull the convex hull of the contacting atoms' (x, y) (close to A_in for a convex patch)
 Only the Python standard library is used.
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from lammps_dump import snapshots  # noqa: E402
 
 
 def triangles(path):
@@ -46,27 +50,11 @@ def triangles(path):
 
 
 def frames(path):
-    with open(path) as f:
-        while True:
-            line = f.readline()
-            if not line:
-                return
-            if not line.startswith("ITEM: TIMESTEP"):
-                continue
-            step = int(f.readline())
-            f.readline()
-            n = int(f.readline())
-            for _ in range(4):
-                f.readline()  # box bounds header and lines
-            cols = f.readline().split()[2:]
-            ii, ix, iy, it = (cols.index(k) for k in ("id", "x", "y", "v_touch"))
-            pos, touch = {}, {}
-            for _ in range(n):
-                w = f.readline().split()
-                a = int(w[ii])
-                pos[a] = (float(w[ix]), float(w[iy]))
-                touch[a] = int(float(w[it]))
-            yield step, pos, touch
+    """(step, {id: (x, y)}, {id: touch}) of each snapshot of the dump 'id x y v_touch'"""
+    for step, cols, rows in snapshots(path):
+        ii, ix, iy, it = (cols.index(k) for k in ("id", "x", "y", "v_touch"))
+        yield (step, {int(w[ii]): (float(w[ix]), float(w[iy])) for w in rows},
+               {int(w[ii]): int(float(w[it])) for w in rows})
 
 
 def hull_area(points):

@@ -10,9 +10,13 @@ the fluid atoms (min and mean, and the share of atoms within half the mean of an
 by the tensile instability) and the share of wall atoms with a fluid atom within the adhesion's
 reach (the protoplast held on the wall)."""
 import math
+import os
 import re
 import statistics
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from lammps_dump import positions, snapshots  # noqa: E402
 
 # columns of dry_TAG.dat (in.drying)
 COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid "
@@ -37,21 +41,6 @@ def planes(r, key):
     """mean and spread (standard deviation) of a descriptor over the sections x, y, z"""
     v = [r[key + s] for s in ("x", "y", "")]
     return statistics.mean(v), statistics.pstdev(v)
-
-
-def snapshots(path):
-    """(step, {id: (x, y, z)}) of each snapshot of a LAMMPS dump 'id x y z'"""
-    with open(path) as f:
-        lines = f.read().split("\n")
-    k = 0
-    while k < len(lines) and lines[k].startswith("ITEM: TIMESTEP"):
-        step, n = int(lines[k + 1]), int(lines[k + 3])
-        atoms = {}
-        for line in lines[k + 9:k + 9 + n]:
-            i, x, y, z = line.split()
-            atoms[int(i)] = (float(x), float(y), float(z))
-        yield step, atoms
-        k += 9 + n
 
 
 def grid(points, size):
@@ -81,7 +70,8 @@ def stability(tag, reach, rs):
     with open(f"log.{tag}") as f:
         m0 = float(re.search(r"turgid cell: M0 = ([0-9.eE+-]+) kg", f.read()).group(1))
     out, first = [], None
-    for (step, wall), (_, fluid) in zip(snapshots(f"wall_{tag}.dump"), snapshots(f"fluid_{tag}.dump")):
+    for (step, wc, wr), (_, fc, fr) in zip(snapshots(f"wall_{tag}.dump"), snapshots(f"fluid_{tag}.dump")):
+        wall, fluid = positions(wc, wr), positions(fc, fr)
         first = step if first is None else first
         t = (step - first) * tstep
         row = next((r for r in rs if r["t"] >= t - 1e-6 * tstep), rs[-1])
