@@ -332,8 +332,7 @@ void FixCellTurgor::evaluate(bool transfer)
     drive.cool([&]() {
       const double t = drive.temperature;
       // rho_w L_P(T), as in the loop below
-      const double gw =
-          rhow * (lp * (ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0));
+      const double gw = rhow * (lp * arrhenius_factor(t));
       double sums[2] = {0.0, 0.0}, all[2];
       for (int h = 0; h < (int) home.size(); h++) {
         const int c = home[h];
@@ -352,7 +351,7 @@ void FixCellTurgor::evaluate(bool transfer)
   }
   const double t = drive.temperature, psi_ext = drive.psi_ext;
   // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
-  const double arrhenius = ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
+  const double arrhenius = arrhenius_factor(t);
   const double lpt = lp * arrhenius;
   double air_sums[2] = {0.0, 0.0};    // the exposed cells' vapour flux and area
 
@@ -828,4 +827,14 @@ void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
 const CellRegistry &FixCellTurgor::registry() const
 {
   return cells->registry();
+}
+
+/* ----------------------------------------------------------------------
+   L_P(T)/L_P = exp(-(Ea/R)(1/T - 1/Tref)), 1 without Ea; the same factor on L_cc
+   (doc/model.md §5.9, §5.13)
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::arrhenius_factor(double t) const
+{
+  return ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
 }

@@ -96,6 +96,7 @@ class FixCellTurgor : public Fix {
   double offset_time() const;
   bool check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellTurgorState::Cell &s, bool advance);
+  double arrhenius_factor(double t) const;    // L_P(T)/L_P (and L_cc), 1 without Ea
   double pair_bulk_modulus();
 };
 
