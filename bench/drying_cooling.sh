@@ -77,16 +77,7 @@ echo
 
 # 2. the coarse drying cell
 "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals --out c312.data >cellgen312.log
-read -r h dt ws nup acc < <(python3 - cellgen312.log 0.03 <<'PY'
-import re, sys
-log = open(sys.argv[1]).read()
-nfluid = int(re.search(r"particles: (\d+) fluid", log).group(1))
-bond = float(re.search(r"wall bond length: min \S+, mean (\S+),", log).group(1))
-f = (1647 / nfluid) ** (1 / 3)
-dt = 1e-8 * f
-print(f"{12.2e-6 * f:.6g} {dt:.6g} {bond / 8.62822e-6:.6g} {500 * round(24 / f)} {float(sys.argv[2]) / dt:.6g}")
-PY
-)
+read -r h dt ws nup acc < <(python3 "$here/cell_scale.py" cellgen312.log 0.03)
 for t in 333.15 343.15; do
   for c in no yes; do
     tag=cell_T${t%.*}_$c

@@ -39,18 +39,7 @@ for p in "${points[@]}"; do
   "$build/tools/cellgen/cellgen" --nwall "$nw" --nfluid "$nf" --wall-mass 1e-12 --dihedrals --out "c$nw.data" >"cellgen$nw.log"
   # h and dt follow the fluid spacing, the contact size the wall spacing (the seed's: 1647 fluid
   # atoms, mean wall bond 8.62822 um)
-  read -r h dt ws nup acc < <(python3 - "cellgen$nw.log" "$tstep" <<'PY'
-import re, sys
-log = open(sys.argv[1]).read()
-nfluid = int(re.search(r"particles: (\d+) fluid", log).group(1))
-bond = float(re.search(r"wall bond length: min \S+, mean (\S+),", log).group(1))
-f = (1647 / nfluid) ** (1 / 3)
-dt = 1e-8 * f
-# uptake steps a multiple of 500 (+ the 2000 sealed), so that the output intervals of drying end
-# on the run's last step
-print(f"{12.2e-6 * f:.6g} {dt:.6g} {bond / 8.62822e-6:.6g} {500 * round(24 / f)} {float(sys.argv[2]) / dt:.6g}")
-PY
-  )
+  read -r h dt ws nup acc < <(python3 "$here/cell_scale.py" "cellgen$nw.log" "$tstep")
   if [ ! -s "final_$tag.txt" ]; then
     t0=$SECONDS
     /usr/bin/time -f "%U %S" -o "cpu_$tag.txt" "${lmp[@]}" -in "$here/../examples/drying/in.drying" \
