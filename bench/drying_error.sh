@@ -12,7 +12,8 @@
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
 # dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
 # XS="0.5 0.2" (default) are the X/X0 of the table. Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
-# the cores (note it with the table); the CPU time (user + system, /usr/bin/time) is the cost.
+# the cores (note it with the table); the CPU time (user + system, /usr/bin/time) is the cost. The
+# last column is the drying alone, turgid to the end (LAMMPS's loop times after the turgid stage).
 # WORK=dir keeps (and reuses) the runs there. LMPVARS="-var NAME VALUE ..." is passed to every run
 # (e.g. LMPVARS="-var tensile 0" for the scene without the artificial stress).
 set -euo pipefail
@@ -52,6 +53,7 @@ done
 XS=${XS:-0.5 0.2} python3 - "${points[@]}" <<'PY'
 import math
 import os
+import re
 import statistics
 import sys
 XS = [float(x) for x in os.environ["XS"].split()]
@@ -81,8 +83,14 @@ print(f"reference: {pts[0][0]} wall particles, {pts[0][1]} s of physical time pe
       f"X/X0 = {' and '.join(map(str, XS))} relative to the turgid cell; A, P, F: mean +- spread of the sections "
       "x, y, z through the centroid (error: of the mean)")
 head = [f"{k}@{x}" for x in XS for k in ("A", "P", "F", "V", "wrink")]
-print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock / CPU (s) |")
-print("|---" * (2 + len(head) + 2) + "|")
+def drying_loop(tag):
+    """wall-clock of the drying alone (turgid to the end): LAMMPS's loop times after the turgid
+    cell's line of the log"""
+    with open(f"log.{tag}") as f:
+        txt = f.read()
+    return sum(float(m) for m in re.findall(r"Loop time of ([0-9.e+-]+)", txt[txt.find("turgid cell:"):]))
+print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock / CPU (s) | drying alone (s) |")
+print("|---" * (2 + len(head) + 3) + "|")
 for (n, ts), t in zip(pts, tags):
     vals, errs = [], []
     for x in XS:
@@ -100,6 +108,6 @@ for (n, ts), t in zip(pts, tags):
     with open(f"wall_{t}.txt") as f:
         wc = f.read().strip()
     err = f"{max(errs):.1%}" if errs else "(ref)"
-    print(f"| {n} | {ts} | " + " | ".join(vals) + f" | {err} | {wc} |")
+    print(f"| {n} | {ts} | " + " | ".join(vals) + f" | {err} | {wc} | {drying_loop(t):.0f} |")
 PY
 echo "runs in $work"

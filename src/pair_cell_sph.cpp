@@ -40,7 +40,8 @@ static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
 static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
-// per-atom h: the neighbour cutoff allows h up to HCAP x the pair_coeff h (unless a cutoff is given)
+// per-atom h: the neighbour cutoff allows h up to HCAP x the largest h at the run's start (run_h;
+// unless a cutoff is given)
 static const double HCAP = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-10;
@@ -48,6 +49,9 @@ static const int HITER = 50;
 // h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger h,
 // so that the iterations sum over those pairs only while every h changed by less than HMARGIN
 static const double HMARGIN = 1e-3;
+// per-atom h with the wall boundary: the fluid pairs kept at a split of the list allow each h to
+// grow by HGROW before the list is split again (split_list)
+static const double HGROW = 0.05;
 // h adaptive with the wall boundary: exact evaluations of the boundary at the first step of a run
 // whose h had no value yet (h starts from the pair_coeff value)
 static const int HSTART = 4;
@@ -140,10 +144,7 @@ void PairCellSPH::compute(int eflag, int vflag)
   if (temp_set) update_viscosity();
 
   if (walls) {
-    if (neighbor->ago == 0 || grown) {
-      wall_triangles();
-      split_list();
-    }
+    if (neighbor->ago == 0 || grown) wall_triangles();
     refreshing = neighbor->ago == 0 || grown || update->ntimestep - refreshed >= REFRESH ||
         update->ntimestep < refreshed;
     if (refreshing) refreshed = update->ntimestep;
@@ -157,6 +158,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
+  if (walls && (neighbor->ago == 0 || grown)) split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
     if (pass > 0) refreshing = 1;
     density_pass(1);
@@ -307,6 +309,8 @@ void PairCellSPH::shift_atoms()
 
 void PairCellSPH::density_pass(int first)
 {
+  // per-atom h grown beyond the split's allowance: split again (split_list)
+  if (walls && hmode != HFIXED && outgrown()) split_list(2.0 * neighbor->skin);
   typedef void (PairCellSPH::*Loop)(int);
 #define CELLSPH_DENSITY(V, W, P)                                 \
   {                                                              \
@@ -833,14 +837,28 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
 /* ----------------------------------------------------------------------
    at reneighbouring: the neighbour list split into the fluid pairs of the SPH sums and the
    fluid-wall pairs of the wall boundary (same cell), so that the steps between exact evaluations
-   of the boundary do not visit the boundary pairs
+   of the boundary do not visit the boundary pairs. With per-atom h the fluid pairs are only those
+   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches HCAP x
+   the largest h of the run's start, most of it beyond every support once a cell has dried
+   (margin = skin at a build; 2 skin on a later split, since both atoms may have moved skin/2 from
+   the build positions before and move as much again after). Dropped pairs would be skipped by
+   the density pass anyway, so the sums are the same.
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::split_list()
+void PairCellSPH::split_list(double margin)
 {
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
   const int inum = list->inum;
+  const int peratom = hmode != HFIXED;
+  double **x = atom->x;
+  const double *hv = peratom ? atom->dvector[ih] : nullptr;
+  const double reach = CellKernel::support(kernel) * (1.0 + HMARGIN) * (1.0 + HGROW);
+  if (peratom) {
+    const int nall = atom->nlocal + atom->nghost;
+    hsplit.resize(nall);
+    for (int i = 0; i < nall; i++) hsplit[i] = fluid[type[i]] ? hv[i] : 0.0;
+  }
   fluidfirst.assign(inum + 1, 0);
   fluidj.clear();
   boundarypairs.clear();
@@ -854,14 +872,38 @@ void PairCellSPH::split_list()
       // each cell's fluid is bounded by its own wall: no pair with another cell's fluid
       // (doc/pair_cell_sph.md, Wall boundary)
       if (molecule[i] != molecule[j]) continue;
-      if (!p.boundary)
+      if (!p.boundary) {
+        if (peratom && fluid[type[i]] && fluid[type[j]]) {
+          // within margin of the support of (1 + HGROW) x the larger h (the comment above)
+          const double r = reach * std::max(hv[i], hv[j]) + margin;
+          const double delx = x[i][0] - x[j][0];
+          const double dely = x[i][1] - x[j][1];
+          const double delz = x[i][2] - x[j][2];
+          if (delx * delx + dely * dely + delz * delz >= r * r) continue;
+        }
         fluidj.push_back(j);
-      else
+      } else
         boundarypairs.push_back(fluid[type[i]] ? std::array<int, 2>{i, j}
                                                : std::array<int, 2>{j, i});
     }
   }
   fluidfirst[inum] = static_cast<int>(fluidj.size());
+}
+
+/* ----------------------------------------------------------------------
+   per-atom h: an owned or ghost fluid atom whose h grew beyond (1 + HGROW) x its h at the last
+   split_list(), so that the split may lack pairs of its support (a local decision: the sums are
+   the same with or without a new split)
+------------------------------------------------------------------------- */
+
+bool PairCellSPH::outgrown() const
+{
+  const double *hv = atom->dvector[ih];
+  const int nall = atom->nlocal + atom->nghost;
+  if (static_cast<int>(hsplit.size()) < nall) return true;
+  for (int i = 0; i < nall; i++)
+    if (hv[i] > (1.0 + HGROW) * hsplit[i]) return true;
+  return false;
 }
 
 /* ----------------------------------------------------------------------
@@ -1585,7 +1627,7 @@ void PairCellSPH::init_style()
   }
   // per-atom h: the largest h of each fluid type that the neighbour cutoff allows
   for (int i = 1; i <= n; i++)
-    hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : HCAP * h[i][i];
+    hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : HCAP * run_h(i);
   walls = has_wall_boundary() ? 1 : 0;
   if (walls) {
     if (domain->dimension != 3)
@@ -1634,6 +1676,24 @@ void PairCellSPH::init_style()
                first);
 
   CellCompat::request_list(neighbor, this, instance_me, CellCompat::REQ_DEFAULT);
+}
+
+/* ----------------------------------------------------------------------
+   the h of fluid type t at the start of a run, from which the default cutoff allows HCAP x:
+   the largest per-atom h of the type over all ranks (h mass|adaptive, atoms that have one),
+   else the pair_coeff h; so the neighbour list follows a cell that dries or takes up water
+------------------------------------------------------------------------- */
+
+double PairCellSPH::run_h(int t) const
+{
+  double hmax = 0.0, all = 0.0;
+  if (hmode != HFIXED) {
+    const double *hv = atom->dvector[ih];
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->type[i] == t) hmax = std::max(hmax, hv[i]);
+  }
+  MPI_Allreduce(&hmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return all > 0.0 ? all : h[t][t];
 }
 
 /* ----------------------------------------------------------------------
@@ -2105,6 +2165,6 @@ double PairCellSPH::memory_usage()
         contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
         trivert.capacity() * sizeof(int) + tritag.capacity() * sizeof(tagint) +
         fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
-        boundarypairs.capacity() * sizeof(boundarypairs[0]);
+        hsplit.capacity() * sizeof(double) + boundarypairs.capacity() * sizeof(boundarypairs[0]);
   return bytes;
 }

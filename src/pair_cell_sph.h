@@ -150,6 +150,7 @@ class PairCellSPH : public Pair {
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
   std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
   std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell
+  std::vector<double> hsplit;                       // per-atom h at the last split_list()
   enum { COMM_DENSITY, COMM_SUMS, COMM_H, COMM_LOAD, COMM_TRIANGLES, COMM_SHIFT } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
@@ -181,11 +182,13 @@ class PairCellSPH : public Pair {
   double newton_h();
   void solve_h();
   void too_long(int) const;
+  double run_h(int) const;
   void unsolvable(int, double) const;
   template <int EVFLAG> void wall_forces();
   void wall_triangles();
   template <int PERATOM> void boundary_terms(int, int, const PairConst &);
-  void split_list();
+  void split_list(double);
+  bool outgrown() const;
   void merge_terms();
   void linear_deficit();
   void contact(int, int, int, int);

@@ -20,6 +20,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -85,6 +86,7 @@ PairCellWall::~PairCellWall()
 void PairCellWall::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (neighbor->ago == 0 || update->setupflag) near_pairs();
 
   if (load_wall) {
     if (atom->nmax > nmax_load) {
@@ -104,7 +106,41 @@ void PairCellWall::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   the pair loop; with LOAD, also the force of each fluid atom on the wall atoms of its own cell
+   at each neighbour build: the pairs of the list within their own cutoff + skin (with their
+   special bits), which are all that can come within the cutoff before the next build. Under
+   pair hybrid the list holds every pair within the longest cutoff of its type pair over all
+   sub-styles (e.g. the wall boundary's reach of pair cell/sph), most of them far beyond ours.
+------------------------------------------------------------------------- */
+
+void PairCellWall::near_pairs()
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const double skin = neighbor->skin;
+  const int inum = list->inum;
+  nearfirst.assign(inum + 1, 0);
+  nearj.clear();
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    nearfirst[ii] = static_cast<int>(nearj.size());
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double cutsqij = cutsq[type[i]][type[j]];
+      if (cutsqij <= 0.0) continue;
+      const double reach = sqrt(cutsqij) + skin;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      if (delx * delx + dely * dely + delz * delz < reach * reach) nearj.push_back(jlist[jj]);
+    }
+  }
+  nearfirst[inum] = static_cast<int>(nearj.size());
+}
+
+/* ----------------------------------------------------------------------
+   the pair loop over near_pairs(); with LOAD, also the force of each fluid atom on the wall atoms
+   of its own cell
 ------------------------------------------------------------------------- */
 
 template <int LOAD> void PairCellWall::eval(int eflag)
@@ -119,8 +155,6 @@ template <int LOAD> void PairCellWall::eval(int eflag)
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -130,8 +164,8 @@ template <int LOAD> void PairCellWall::eval(int eflag)
     const int itype = type[i];
     const Coeff *coeffi = coeffs[itype];
     const double *cutsqi = cutsq[itype];
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
+    const int *jlist = &nearj[nearfirst[ii]];
+    const int jnum = nearfirst[ii + 1] - nearfirst[ii];
 
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj];
