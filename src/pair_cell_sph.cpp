@@ -34,8 +34,9 @@
 using namespace LAMMPS_NS;
 
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
-// 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp)
-static const int RESTART_VERSION = 6;
+// 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
+// wall boundary's adhesion W per type pair
+static const int RESTART_VERSION = 7;
 static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
@@ -83,9 +84,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
     viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
     hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), wallload(nullptr),
-    tricount(nullptr), trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr),
-    xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr), refreshing(1), refreshed(-1),
+    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr),
+    adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr), tricount(nullptr),
+    trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr),
+    gradsum(nullptr), disp(nullptr), slot(nullptr), refreshing(1), refreshed(-1),
     commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0),
     pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
     pairmu(nullptr), maxfirst(0), maxpairs(0)
@@ -116,6 +118,8 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairwj);
   if (allocated) {
     memory->destroy(boundary);
+    memory->destroy(adhesion);
+    memory->destroy(adhk);
     memory->destroy(setflag);
     memory->destroy(cutsq);
     memory->destroy(rho0);
@@ -179,6 +183,7 @@ void PairCellSPH::compute(int eflag, int vflag)
       prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i];
       if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
       if (peratom) prho2[i] /= omega[i];
+      if (adhering && hmode == HADAPTIVE) prho2[i] += adhp[i];
     }
   if (tensile > 0.0) artificial_stress();
 
@@ -531,6 +536,7 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(dhdef);
   memory->destroy(dhdef0);
   memory->destroy(hbase);
+  memory->destroy(adhp);
 }
 
 void PairCellSPH::grow_peratom()
@@ -546,6 +552,7 @@ void PairCellSPH::grow_peratom()
       memory->create(dhdef, nmax, "pair:dhdef");
       memory->create(dhdef0, nmax, "pair:dhdef0");
       memory->create(hbase, nmax, "pair:hbase");
+      memory->create(adhp, nmax, "pair:adhp");
     }
   }
   if (shift > 0.0) memory->create(gradc, nmax, 3, "pair:gradc");
@@ -1005,9 +1012,12 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
     // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
-    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
-    if (termfirst[i] == termfirst[i + 1] || 1.0 - deficit[i] < gamma_min) continue;
-    const double c = rmass[i] * prho2[i] * rho[i];
+    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor);
+    // the adhesion E_a = -a_f (1 - gamma_f) adds -a_f (doc/pair_cell_sph.md, eq. A1)
+    if (termfirst[i] == termfirst[i + 1]) continue;
+    double c = 1.0 - deficit[i] < gamma_min ? 0.0 : rmass[i] * prho2[i] * rho[i];
+    if (adhering) c -= adhesion_a(i);
+    if (c == 0.0) continue;
     f[i][0] += c * gradsum[i][0];
     f[i][1] += c * gradsum[i][1];
     f[i][2] += c * gradsum[i][2];
@@ -1180,6 +1190,25 @@ void PairCellSPH::tabulate_phi()
     phi[k] = phi[k + 1] + half * sum;
     dphi[k] = -shell(k * phidq);
   }
+  // c_k = integral_0^s (1 - gamma of a plane at z = q h) dq = <q>/4 = (1/4) integral Phi dq
+  // (doc/pair_cell_sph.md, eq. A2), the integral of the cubic Hermite Phi between table points
+  planeint = 0.0;
+  for (int k = 0; k < n; k++)
+    planeint +=
+        0.5 * phidq * (phi[k] + phi[k + 1]) + phidq * phidq * (dphi[k] - dphi[k + 1]) / 12.0;
+  planeint *= 0.25;
+}
+
+/* ----------------------------------------------------------------------
+   a_f of the adhesion E_a = -a_f (1 - gamma_f) of fluid atom i (owned or ghost): adhk m_f / h_f
+------------------------------------------------------------------------- */
+
+double PairCellSPH::adhesion_a(int i) const
+{
+  const int t = atom->type[i];
+  if (adhk[t] == 0.0) return 0.0;
+  // a_f = W m_f / (rho0 c_k h_f): energy W per wall area of a fluid at rho0 (eq. A2)
+  return adhk[t] * atom->rmass[i] / (hmode == HFIXED ? h[t][t] : atom->dvector[ih][i]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1238,6 +1267,7 @@ void PairCellSPH::apply_eos()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int t = type[i];
+    if (adhp) adhp[i] = 0.0;
     if (!fluid[t]) continue;
     // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
     const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
@@ -1269,6 +1299,18 @@ void PairCellSPH::apply_eos()
     // P / (rho^2 gamma Omega): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2
     // without walls at fixed h)
     prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / (gamma * omega);
+    if (adhering) {
+      const double a = adhesion_a(i);
+      // E_a = -a_f (1 - gamma_f) (doc/pair_cell_sph.md, eq. A1)
+      e -= a * deficit[i] / rmass[i];
+      // h adaptive: dE_a/dh_f dh_f/drho_f, dh_f/drho_f = -h_f/(3 rho_f) at fixed positions, with
+      // dE_a/dh_f = -a_f (dD_f/dh_f - D_f/h_f) (a_f ~ 1/h_f), on P/(rho^2 gamma Omega) (eq. A3)
+      if (hmode == HADAPTIVE) {
+        const double hi = atom->dvector[ih][i];
+        adhp[i] = a * (hi * dhdef[i] - deficit[i]) / (3.0 * rho[i] * rmass[i] * gamma * omega);
+        prho2[i] += adhp[i];
+      }
+    }
     if (eflag_global) eng_vdwl += rmass[i] * e;
     if (eflag_atom) eatom[i] += rmass[i] * e;
   }
@@ -1361,6 +1403,8 @@ void PairCellSPH::allocate()
   memory->create(h, n, n, "pair:h");
   memory->create(pc, n, n, "pair:pc");
   memory->create(boundary, n, n, "pair:boundary");
+  memory->create(adhesion, n, n, "pair:adhesion");
+  memory->create(adhk, n, "pair:adhk");
   memory->create(wself, n, "pair:wself");
   memory->create(invrho0, n, "pair:invrho0");
   memory->create(eosk, n, "pair:eosk");
@@ -1371,9 +1415,10 @@ void PairCellSPH::allocate()
       setflag[i][j] = 0;
       rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
       boundary[i][j] = 0;
+      adhesion[i][j] = 0.0;
       pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
     }
-    wself[i] = invrho0[i] = eosk[i] = hcap[i] = 0.0;
+    wself[i] = invrho0[i] = eosk[i] = hcap[i] = adhk[i] = 0.0;
     fluid[i] = 0;
   }
 }
@@ -1520,14 +1565,28 @@ void PairCellSPH::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0;
-  const int wall = narg == 3 && strcmp(arg[2], "wall") == 0;
+  double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0, adhesion_one = 0.0;
+  const int wall = narg >= 3 && strcmp(arg[2], "wall") == 0;
   if (wall) {
     if (ilo <= jhi && jlo <= ihi)
       error->all(FLERR,
                  "Pair_coeff cell/sph: {} {} wall: a type cannot be the wall of itself (give the "
                  "fluid type and the wall type)",
                  arg[0], arg[1]);
+    // pair_coeff <fluid> <wall> wall [adhesion W]
+    if (narg > 3) {
+      if (narg != 5 || strcmp(arg[3], "adhesion") != 0)
+        error->all(FLERR,
+                   "Pair_coeff cell/sph: expected 'pair_coeff <fluid> <wall> wall [adhesion W]', "
+                   "got {} args after wall",
+                   narg - 3);
+      adhesion_one = utils::numeric(FLERR, arg[4], false, lmp);
+      if (!(adhesion_one >= 0.0))
+        error->all(FLERR,
+                   "Pair_coeff cell/sph: wall adhesion W = {} J/m^2 must be >= 0 (the work of "
+                   "adhesion per wall area)",
+                   adhesion_one);
+    }
   } else if (narg == 4 && strcmp(arg[2], "file") == 0) {
     CellParams params(lmp, arg[3], "pair_coeff cell/sph");
     rho0_one = params.positive("sph_rho0");
@@ -1568,6 +1627,7 @@ void PairCellSPH::coeff(int narg, char **arg)
       mu[i][j] = mu_one;
       h[i][j] = h_one;
       boundary[i][j] = wall;
+      adhesion[i][j] = adhesion_one;
       setflag[i][j] = 1;
       count++;
     }
@@ -1629,6 +1689,12 @@ void PairCellSPH::init_style()
   for (int i = 1; i <= n; i++)
     hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : HCAP * run_h(i);
   walls = has_wall_boundary() ? 1 : 0;
+  adhering = 0;
+  for (int i = 1; i <= n; i++) {
+    adhk[i] = 0.0;    // set by init_one of the boundary pairs
+    for (int j = i; j <= n; j++)
+      if (setflag[i][j] && boundary[i][j] && adhesion[i][j] > 0.0) adhering = 1;
+  }
   if (walls) {
     if (domain->dimension != 3)
       error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
@@ -1719,6 +1785,15 @@ double PairCellSPH::init_one(int i, int j)
     // the neighbour range reaches every triangle whose centroid is inside the kernel support:
     // the centroid is within 2/3 of the longest edge of the triangle's keeper
     const double range = support + 2.0 / 3.0 * (edgecap - neighbor->skin);
+    // adhesion: a_f = adhk m_f / h_f with adhk = W / (rho0 c_k) (doc/pair_cell_sph.md, eq. A2)
+    const double k = adhesion[i][j] / (rho0[f][f] * planeint);
+    if (adhk[f] != 0.0 && adhk[f] != k)
+      error->all(
+          FLERR,
+          "Pair cell/sph: fluid type {} has wall boundaries with two adhesions W (pair_coeff "
+          "{} {} wall adhesion {}): give each fluid type one W",
+          f, i, j, adhesion[i][j]);
+    adhk[f] = k;
     pc[i][j] = PairConst{range * range, CellKernel::scale(kernel, 3, h[f][f]),
                          0.0,           1,
                          reach,         bulk[f][f] * reach * reach};
@@ -1804,6 +1879,7 @@ void PairCellSPH::write_restart(FILE *fp)
         fwrite(&bulk[i][j], sizeof(double), 1, fp);
         fwrite(&mu[i][j], sizeof(double), 1, fp);
         fwrite(&h[i][j], sizeof(double), 1, fp);
+        fwrite(&adhesion[i][j], sizeof(double), 1, fp);
       }
     }
 }
@@ -1831,6 +1907,12 @@ void PairCellSPH::read_restart(FILE *fp)
         bulk[i][j] = values[1];
         mu[i][j] = values[2];
         h[i][j] = values[3];
+        // version 7: the wall boundary's adhesion W; older files had none
+        adhesion[i][j] = 0.0;
+        if (restart_version >= 7) {
+          if (me == 0) utils::sfread(FLERR, &adhesion[i][j], sizeof(double), 1, fp, nullptr, error);
+          MPI_Bcast(&adhesion[i][j], 1, MPI_DOUBLE, 0, world);
+        }
       }
     }
 }
@@ -1953,7 +2035,9 @@ void PairCellSPH::write_data_all(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      if (boundary[i][j])
+      if (boundary[i][j] && adhesion[i][j] > 0.0)
+        fprintf(fp, "%d %d wall adhesion %.16g\n", i, j, adhesion[i][j]);
+      else if (boundary[i][j])
         fprintf(fp, "%d %d wall\n", i, j);
       else
         fprintf(fp, "%d %d %.16g %.16g %.16g %.16g\n", i, j, rho0[i][j], bulk[i][j], mu[i][j],
@@ -2051,6 +2135,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
       buf[m++] = atom->dvector[ih][list[k]];
       buf[m++] = atom->dvector[iomega][list[k]];
     }
+    if (adhering && hmode == HADAPTIVE) buf[m++] = adhp[list[k]];
   }
   return m;
 }
@@ -2089,6 +2174,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
       atom->dvector[ih][i] = buf[m++];
       atom->dvector[iomega][i] = buf[m++];
     }
+    if (adhering && hmode == HADAPTIVE) adhp[i] = buf[m++];
   }
 }
 

@@ -117,6 +117,14 @@ class PairCellSPH : public Pair {
   double phidq;        // q step of the table of Phi(q) = kernel fraction beyond q = r/h
   std::vector<double> phi, dphi;    // Phi and dPhi/dq at the table points
   double *deficit;                  // 1 - gamma_i of fluid atom i
+  // wall-fluid adhesion through the completion (pair_coeff <fluid> <wall> wall adhesion W):
+  // E_a = -sum_f a_f (1 - gamma_f), a_f = adhk m_f / h_f, adhk = W / (rho0 c_k) per fluid type
+  double **adhesion;    // W (J/m^2) per type pair
+  double *adhk;         // W / (rho0 c_k) per fluid type, 0 without adhesion
+  int adhering;         // 1 if any fluid type has adhesion
+  double *adhp;         // h adaptive: the adhesion's term of P/(rho^2 gamma Omega) per atom
+  double planeint;    // c_k: integral over z/h of 1 - gamma beside a plane = <r/h>/4 of the kernel
+  double adhesion_a(int) const;
   double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
   // the wall triangles: each one is kept by its vertex b (the angle's middle atom), as the local
   // indices of a and c, found again on every reneighbouring (owned atoms from their angles,

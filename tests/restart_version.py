@@ -6,8 +6,9 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 in the
-                                               layout of version 5 (no tensile eps, n, dp)
+  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 or 7 in
+                                               the layout of version 5 (no tensile eps, n, dp; no
+                                               wall adhesion W per type pair)
 
 STYLE is cell/sph, cell/wall, cell/neohookean, cell/lamella, cell/turgor or cell/bending
 (unversioned: not cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/lamella or
@@ -65,14 +66,36 @@ def turgor_to_version2(data, at, version):
     struct.pack_into("=d", data, at, -2.0)
 
 
-def sph_to_version5(data, at):
+def atom_types(data):
+    """The number of atom types from the restart header: the NATOMS token (16, a bigint) followed
+    by the NTYPES token (17, an int), as LAMMPS's write_restart writes them."""
+    key = struct.pack("=i", 16)
+    start = data.find(key)
+    while start >= 0:
+        if struct.unpack_from("=i", data, start + 12)[0] == 17:
+            return struct.unpack_from("=i", data, start + 16)[0]
+        start = data.find(key, start + 1)
+    sys.exit("restart_version.py: no NTYPES in the restart header")
+
+
+def sph_to_version5(data, at, version):
     """Drop the version-6 settings (tensile eps double, n int, dp double) of the pair cell/sph
     payload whose marker is at offset at: after the marker, kernel eos (int), cutoff (double),
     hmode (int), eta (double), temp flag (int), T, Tref (double), name length (int), name, shift
-    (double) come first."""
+    (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
+    setflag, boundary (int) and rho0, K, mu, h (double)."""
     (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
     del data[start:start + 8 + 4 + 8]
+    if version == 7:
+        n = atom_types(data)
+        pos = start
+        for _ in range(n * (n + 1) // 2):
+            (setflag,) = struct.unpack_from("=i", data, pos)
+            pos += 4
+            if setflag:
+                pos += 4 + 4 * 8
+                del data[pos:pos + 8]
     struct.pack_into("=i", data, at, -5)
 
 
@@ -91,9 +114,9 @@ def main():
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
-            if version != 6:
-                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6")
-            sph_to_version5(data, at)
+            if version not in (6, 7):
+                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 or 7")
+            sph_to_version5(data, at, version)
             print(f"restart_version.py: {style} payload version {version} -> 5")
         elif mode == "older":
             print(f"restart_version.py: {style} payload version {version} -> 2")
