@@ -3,7 +3,8 @@
    pair_style cell/wall: the central short-range forces between a wall particle and a fluid
    particle (repulsion F^rw = -F^rf, adhesion F^a) and between non-bonded wall particles (contact).
    Each term is switched on per type pair; a per-pair bitmask keeps off terms out of the loop.
-   Bonded wall pairs are excluded through special_bonds (factor_lj), fluid-fluid pairs belong to
+   Bonded wall pairs of one cell are excluded through special_bonds (factor_lj; a bonded pair of two
+   cells, a junction, keeps weight 1), fluid-fluid pairs belong to
    pair_style cell/sph (under hybrid/overlay).
 ------------------------------------------------------------------------- */
 
@@ -168,10 +169,11 @@ template <int LOAD> void PairCellWall::eval(int eflag)
     const int jnum = nearfirst[ii + 1] - nearfirst[ii];
 
     for (int jj = 0; jj < jnum; jj++) {
-      int j = jlist[jj];
-      const double factor_lj = special_lj[sbmask(j)];
+      const int j = jlist[jj] & NEIGHMASK;
+      // a bonded pair of two cells (a junction) is no wall neighbour pair: full weight
+      const double factor_lj =
+          molecule && molecule[i] != molecule[j] ? 1.0 : special_lj[sbmask(jlist[jj])];
       if (factor_lj == 0.0) continue;
-      j &= NEIGHMASK;
 
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
@@ -687,9 +689,11 @@ void PairCellWall::write_data_all(FILE *fp)
 
 /* ---------------------------------------------------------------------- */
 
-double PairCellWall::single(int /*i*/, int /*j*/, int itype, int jtype, double rsq,
-                            double /*factor_coul*/, double factor_lj, double &fforce)
+double PairCellWall::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
+                            double factor_lj, double &fforce)
 {
+  // as eval(): a bonded pair of two cells has full weight
+  if (atom->molecule && atom->molecule[i] != atom->molecule[j]) factor_lj = 1.0;
   double fpair;
   const double u = evaluate(coeffs[itype][jtype], rsq, 1, fpair);
   fforce = factor_lj * fpair;
