@@ -10,7 +10,9 @@
 #   CASES: coarse seed fine seed-1.06 seed-2.2 (312, 1092, 2562 wall atoms; 1.35 x water unless
 #     stated, stretch about 1.11; 1.06 and 2.2 x water: about 1.02 and 1.30)
 #   NP ranks (default 1)
-# e.g. VARIANTS="base:-" CASES="seed" bench/uniform_fluid.sh
+#   KEEP=folder: keep each run's last profile there
+# e.g. VARIANTS="base:- jig02:jig=0.2 shift02:shiftA=0.02,nshift=15000" CASES="seed" bench/uniform_fluid.sh
+# (seed case, 1 rank: 14-15 min each with the 2 cores loaded about 3 times over)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -68,7 +70,7 @@ print(f"| {name} | {case} | {n} | {lam} | {ps:+.1f} % | {pw:+.2f} % | {g(r'std/m
 EOF
     # nprof=N among the settings: the worst shell and std/mean every N steps of the relaxation
     for p in $(ls profile.*.txt 2>/dev/null | sort -t. -k2 -n); do
-      echo "    step ${p//[^0-9]/} of the relaxation: $(python3 "$here/pressure_shells.py" "$p" | tail -1 | cut -d: -f2-)"
+      echo "    timestep ${p//[^0-9]/} (relaxation from 10000): $(python3 "$here/pressure_shells.py" "$p" | tail -1 | cut -d: -f2-)"
     done
     if [ -n "${KEEP:-}" ]; then mkdir -p "$KEEP" && cp profile.txt "$KEEP/$name-$case.profile.txt"; fi
   done
