@@ -3,7 +3,9 @@
 # radius, counted inwards from R; prints the shells and one summary line:
 #   python3 pressure_shells.py profile.txt [label]
 # SHELLS label: n, mean P, std/mean over all fluid, largest |shell mean / mean - 1| (shells with
-# at least 10 atoms), first shell (next to the wall) / mean - 1
+# at least 10 atoms) and its shell (0 = next to the wall), first shell / mean - 1, and the split of
+# the variance into between shells, sum_s n_s (Pbar_s - Pbar)^2 / N, and within shells,
+# sum_s sum_i (P_i - Pbar_s)^2 / N (the two add to the variance), each as sqrt / mean
 import math, statistics as st, sys
 rows = [l.split() for l in open(sys.argv[1]).readlines()[9:]]
 label = sys.argv[2] if len(sys.argv) > 2 else ""
@@ -13,16 +15,18 @@ dx = (4.0 / 3.0 * math.pi * rw**3 / len(fl)) ** (1.0 / 3.0)
 P = [p for _, p in fl]
 mean = st.mean(P)
 print(f"fluid {len(fl)}, wall radius {rw*1e6:.2f} um, spacing {dx*1e6:.2f} um, mean P {mean/1e3:.1f} kPa, std/mean {st.pstdev(P)/mean*100:.1f} %")
-worst, first = 0.0, None
+worst, iworst, first, between, within = 0.0, -1, None, 0.0, 0.0
 for s in range(int(rw / dx) + 1):
     lo, hi = rw - (s + 1) * dx, rw - s * dx
     ps = [p for r, p in fl if lo <= r < hi]
     if not ps:
         continue
     dev = st.mean(ps) / mean - 1
+    between += len(ps) * (st.mean(ps) - mean) ** 2 / len(P)
+    within += len(ps) * st.pvariance(ps) / len(P)
     if first is None:
         first = dev
-    if len(ps) >= 10:
-        worst = max(worst, abs(dev))
+    if len(ps) >= 10 and abs(dev) > worst:
+        worst, iworst = abs(dev), s
     print(f"  shell {max(lo,0)*1e6:6.1f}-{hi*1e6:6.1f} um: n={len(ps):5d} P={st.mean(ps)/1e3:7.1f} kPa ({dev*100:+.1f} %) std/mean {st.pstdev(ps)/st.mean(ps)*100:.1f} %")
-print(f"SHELLS {label}: n {len(fl)}, mean P {mean/1e3:.1f} kPa, std/mean {st.pstdev(P)/mean*100:.1f} %, worst shell {worst*100:.1f} %, wall shell {first*100:+.1f} %")
+print(f"SHELLS {label}: n {len(fl)}, mean P {mean/1e3:.1f} kPa, std/mean {st.pstdev(P)/mean*100:.1f} %, worst shell {worst*100:.1f} %, wall shell {first*100:+.1f} %, worst at shell {iworst}, between {math.sqrt(between)/mean*100:.1f} %, within {math.sqrt(within)/mean*100:.1f} %")
