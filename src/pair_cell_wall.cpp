@@ -87,7 +87,12 @@ PairCellWall::~PairCellWall()
 void PairCellWall::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  if (neighbor->ago == 0 || update->setupflag) near_pairs();
+  // at a build, or at a run's setup without one ('run ... pre no'), where the atoms may already
+  // be skin/2 from their build positions: then twice the skin
+  if (neighbor->ago == 0)
+    near_pairs(neighbor->skin);
+  else if (update->setupflag)
+    near_pairs(2.0 * neighbor->skin);
 
   if (load_wall) {
     if (atom->nmax > nmax_load) {
@@ -107,17 +112,16 @@ void PairCellWall::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   at each neighbour build: the pairs of the list within their own cutoff + skin (with their
+   at each neighbour build: the pairs of the list within their own cutoff + margin (with their
    special bits), which are all that can come within the cutoff before the next build. Under
    pair hybrid the list holds every pair within the longest cutoff of its type pair over all
    sub-styles (e.g. the wall boundary's reach of pair cell/sph), most of them far beyond ours.
 ------------------------------------------------------------------------- */
 
-void PairCellWall::near_pairs()
+void PairCellWall::near_pairs(double margin)
 {
   double **x = atom->x;
   const int *type = atom->type;
-  const double skin = neighbor->skin;
   const int inum = list->inum;
   nearfirst.assign(inum + 1, 0);
   nearj.clear();
@@ -129,7 +133,7 @@ void PairCellWall::near_pairs()
       const int j = jlist[jj] & NEIGHMASK;
       const double cutsqij = cutsq[type[i]][type[j]];
       if (cutsqij <= 0.0) continue;
-      const double reach = sqrt(cutsqij) + skin;
+      const double reach = sqrt(cutsqij) + margin;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];

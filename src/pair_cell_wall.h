@@ -59,11 +59,11 @@ class PairCellWall : public Pair {
   int load_fluid, load_wall;    // atom types of a wall-load request, 0 = none
   int nmax_load;
   double **load;
-  // the list's pairs within their cutoff + skin, from each neighbour build (near_pairs)
+  // the list's pairs within their cutoff + margin, from each neighbour build (near_pairs)
   std::vector<int> nearfirst, nearj;
 
   void allocate();
-  void near_pairs();
+  void near_pairs(double);
   template <int LOAD> void eval(int eflag);
   double evaluate(const Coeff &, double, int, double &) const;
   std::string describe(const Coeff &) const;
