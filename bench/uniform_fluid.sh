@@ -6,7 +6,8 @@
 # (one spacing wide, bench/pressure_shells.py) and where it is (0 = next to the wall), the wall
 # shell, and the wall-clock of the run.
 #   VARIANTS: name:settings, settings a comma list of wall_boundary.lmp variables, key=value with
-#     '+' for spaces ('-' for none): e.g. "base:- q10:eta=1.0,supp=3,popt=kernel+quintic"
+#     '+' for spaces ('-' for none): e.g. "base:- q10:eta=1.0,supp=3,popt=kernel+quintic";
+#     lattice=shells: the fluid start of cellgen --fluid-lattice shells (default cubic)
 #   CASES: coarse seed fine seed-1.06 seed-2.2 (312, 1092, 2562 wall atoms; 1.35 x water unless
 #     stated, stretch about 1.11; 1.06 and 2.2 x water: about 1.02 and 1.30)
 #   NP ranks (default 1)
@@ -37,15 +38,23 @@ for v in ${VARIANTS:-base:-}; do
     esac
     d=$work/$name-$case
     mkdir -p "$d" && cd "$d"
-    scaled_cell "$nw" "$nf"
+    kv=()
+    if [ "$settings" != - ]; then IFS=, read -ra kv <<<"$settings"; fi
+    # lattice=shells: cellgen --fluid-lattice shells, the ramp starting from its fill radius
+    lattice=cubic
+    for s in "${kv[@]}"; do if [ "${s%%=*}" = lattice ]; then lattice=${s#*=}; fi; done
+    scaled_cell "$nw" "$nf" --fluid-lattice "$lattice"
     hcap=1.3
     if [ "${f%.*}" -ge 2 ]; then hcap=1.5; fi
     vars=(-var bnd 1 -var f "$f" -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws"
       -var hmode adaptive -var eta 1.27 -var hcap "$hcap")
-    if [ "$settings" != - ]; then
-      IFS=, read -ra kv <<<"$settings"
+    if [ "$lattice" = shells ]; then
+      vars+=(-var rfill "$(sed -nE 's/.*fill radius ([0-9.e+-]+) m.*/\1/p' cellgen.log)")
+    fi
+    if [ ${#kv[@]} -gt 0 ]; then
       for s in "${kv[@]}"; do
         key=${s%%=*} val=${s#*=}
+        if [ "$key" = lattice ]; then continue; fi
         # eta: h/dx of the start as well (h = eta dx, dx from cellgen)
         if [ "$key" = eta ]; then vars+=(-var h "$(python3 -c "print($h*$val/1.27)")"); fi
         vars+=(-var "$key" "${val//+/ }")

@@ -29,7 +29,8 @@ constexpr const char *kUsage =
     "               [--nfluid M=1624] [--dx DX] [--gap G] [--rho0 1000] [--wall-mass MW]\n"
     "               [--cells NX NY NZ] [--spacing S] [--radius-spread F] [--seed 1]\n"
     "               [--margin F=0.5] [--ellipsoid A:B:C | --elongation E]\n"
-    "               [--map affine|conformal] [--dihedrals] --out FILE.data\n"
+    "               [--map affine|conformal] [--fluid-lattice cubic|shells] [--dihedrals]\n"
+    "               --out FILE.data\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
     "--ellipsoid A:B:C: semi-axes along x, y, z (replaces --radius); --elongation E: prolate along "
@@ -37,6 +38,8 @@ constexpr const char *kUsage =
     "            a/b = E, with the volume of the sphere of --radius; --map: how the sphere mesh\n"
     "            goes onto the ellipsoid (affine x -> (a x, b y, c z), or conformal for "
     "spheroids).\n"
+    "--fluid-lattice shells: the cubic lattice's number of fluid particles on concentric spheres,\n"
+    "            the outermost at R - G (spherical cells only).\n"
     "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
     "            dihedral_style cell/bending.\n"
     "All values in SI units. Only 3-D geometries are supported. See tools/cellgen/README.md.\n"
@@ -56,6 +59,7 @@ struct Options {
   double margin = 0.5;
   std::uint64_t seed = 1;
   bool dihedrals = false;
+  bool shells = false;    // --fluid-lattice shells
   std::string out;
   bool radiusGiven = false;
   std::optional<Vec3> ellipsoid;    // --ellipsoid semi-axes
@@ -172,6 +176,13 @@ const std::map<std::string, Handler> &optionHandlers()
        [](ArgReader &a, Options &o) { o.seed = static_cast<std::uint64_t>(a.integer()); }},
       {"--out", [](ArgReader &a, Options &o) { o.out = a.word(); }},
       {"--dihedrals", [](ArgReader &, Options &o) { o.dihedrals = true; }},
+      {"--fluid-lattice",
+       [](ArgReader &a, Options &o) {
+         const std::string kind = a.word();
+         if (kind != "cubic" && kind != "shells")
+           throw UsageError("--fluid-lattice must be cubic or shells, not '" + kind + "'");
+         o.shells = kind == "shells";
+       }},
       {"--cells",
        [](ArgReader &a, Options &o) {
          for (long &c : o.cells) c = a.integer();
@@ -224,6 +235,8 @@ void resolveShape(Options &o)
     require(e >= 1 && e <= 100, "--elongation must be in [1, 100]");
     o.shape = Vec3(std::cbrt(e * e), 1 / std::cbrt(e), 1 / std::cbrt(e));
   }
+  require(!o.shells || o.sphere(),
+          "--fluid-lattice shells needs a spherical cell (no --ellipsoid or --elongation)");
   require(
       !o.conformal || (!o.sphere() && spheroidAxis(o.shape)),
       "--map conformal needs a spheroid: --elongation, or --ellipsoid with two equal semi-axes");
@@ -334,6 +347,14 @@ void printSummary(const Options &o, const FluidSpacing &sp, const System &sys, c
   std::printf("wall valence (particles x bonds): %s\n", valenceSummary(st).c_str());
   std::printf("wall bond length: min %g, mean %g, max %g m (max/min %.3f)\n", t.minEdge, t.meanEdge,
               t.maxEdge, t.maxEdge / t.minEdge);
+  if (o.shells && o.nfluid > 0) {
+    // the first cell's shells (cells of another radius have their own)
+    const double outer = o.radius - sp.gap;
+    const long count = static_cast<long>(fluidLattice(outer, sp.dx).size());
+    const double s = shellSpacing(count, outer);
+    std::printf("fluid shells: spacing %g m, outermost at %g m, fill radius %g m (R = %g m)\n", s,
+                outer, outer + 0.5 * s, o.radius);
+  }
   if (!o.sphere())
     std::printf("ellipsoid: semi-axes %g, %g, %g m (x, y, z; elongation %.4f), equal-volume R = %g "
                 "m\n",
@@ -386,6 +407,8 @@ void run(const Options &o, const std::string &args)
   params.shape = o.shape;
   params.rho0 = o.rho0;
   params.withFluid = o.nfluid > 0;
+  params.shells = o.shells;
+  params.seed = o.seed;
   params.wallMass = o.wallMass;
   params.boxMargin = o.margin * o.radius;
   const System sys = buildSystem(unit, cells, params);

@@ -314,13 +314,16 @@ namespace {
   }
 
   void appendCell(System &sys, const Surface &unit, const CellSpec &cell, int molecule,
-                  const BuildParams &params)
+                  const BuildParams &params, std::mt19937_64 &rng)
   {
     const double r = cell.radius;
     const bool sphere = params.shape == Vec3::Ones();
-    const std::vector<Vec3> fluid = !params.withFluid ? std::vector<Vec3>()
+    std::vector<Vec3> fluid = !params.withFluid ? std::vector<Vec3>()
         : sphere ? fluidLattice(r - params.spacing.gap, params.spacing.dx)
                  : fluidEllipsoid(r * params.shape, params.spacing.gap, params.spacing.dx);
+    // --fluid-lattice shells: as many points (so the same masses), on spheres from R - G inwards
+    if (params.shells && !fluid.empty())
+      fluid = fluidShells(static_cast<long>(fluid.size()), r - params.spacing.gap, rng).points;
     if (fluid.empty() && params.withFluid)
       throw std::runtime_error("cell " + std::to_string(molecule) + " has no fluid particle");
     // fluid fills the volume 4/3 pi R^3 enclosed by the wall at the reference density (an
@@ -555,6 +558,61 @@ std::vector<Vec3> fluidLattice(double radius, double dx)
   return points;
 }
 
+double shellSpacing(long count, double outer)
+{
+  // the spacing s that fills the ball of radius outer + s/2 with count points, count s^3 =
+  // 4/3 pi (outer + s/2)^3, then outer / s rounded to a multiple of 1/2 so that the slabs end at 0
+  const double c = std::cbrt(4.0 * kPi / (3.0 * static_cast<double>(count)));
+  return 2.0 * outer / std::max(1.0, std::round(2.0 * (1.0 - 0.5 * c) / c));
+}
+
+FluidShells fluidShells(long count, double outer, std::mt19937_64 &rng)
+{
+  FluidShells f;
+  if (outer <= 0.0 || count <= 0) return f;
+  f.spacing = shellSpacing(count, outer);
+  const double s = f.spacing;
+  const double halves = std::round(2.0 * outer / s);
+  const bool centre = static_cast<long>(halves) % 2 == 0;    // outer / s an integer
+  f.shells = static_cast<int>(std::ceil(0.5 * halves));
+  std::vector<double> radius(f.shells), share(f.shells);
+  double total = 0.0;
+  for (int k = 0; k < f.shells; ++k) {
+    radius[k] = outer - k * s;
+    // the slab [r - s/2, r + s/2] (volume / (4/3 pi)); r - s/2 = 0 for the innermost shell
+    const double lo = std::max(radius[k] - 0.5 * s, 0.0), hi = radius[k] + 0.5 * s;
+    share[k] = hi * hi * hi - lo * lo * lo;
+    total += share[k];
+  }
+  // the centre point holds the rest, [0, s/2]; largest remainders give each shell its count
+  const long onShells = count - (centre ? 1 : 0);
+  std::vector<long> n(f.shells);
+  std::vector<std::pair<double, int>> remainder(f.shells);
+  long placed = 0;
+  for (int k = 0; k < f.shells; ++k) {
+    const double exact = onShells * share[k] / total;
+    n[k] = static_cast<long>(std::floor(exact));
+    placed += n[k];
+    remainder[k] = {exact - n[k], -k};
+  }
+  std::sort(remainder.begin(), remainder.end(), std::greater<>());
+  for (long i = 0; i < onShells - placed; ++i) ++n[-remainder[i].second];
+  if (centre) f.points.emplace_back(Vec3::Zero());
+  const auto unit = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  for (int k = 0; k < f.shells; ++k) {
+    if (n[k] == 0) continue;
+    std::vector<Vec3> shell = fibonacciSphere(static_cast<int>(n[k]));
+    relaxOnSphere(shell, 40);
+    // uniform random rotation: the unit quaternion of Shoemake (1992) from three uniforms
+    const double u1 = unit(), u2 = 2.0 * kPi * unit(), u3 = 2.0 * kPi * unit();
+    const Eigen::Quaterniond q(std::sqrt(u1) * std::cos(u3), std::sqrt(1.0 - u1) * std::sin(u2),
+                               std::sqrt(1.0 - u1) * std::cos(u2), std::sqrt(u1) * std::sin(u3));
+    const Eigen::Matrix3d turn = q.toRotationMatrix();
+    for (const Vec3 &x : shell) f.points.emplace_back(radius[k] * (turn * x));
+  }
+  return f;
+}
+
 Surface ellipsoidSurface(const Surface &unitSphere, const Vec3 &axes)
 {
   Surface s = unitSphere;
@@ -683,8 +741,10 @@ System buildSystem(const Surface &unit, const std::vector<CellSpec> &cells,
   System sys;
   sys.lo = Vec3::Constant(INFINITY);
   sys.hi = Vec3::Constant(-INFINITY);
+  // the shells' rotations: a stream of its own, apart from the radius spread's (cellLattice)
+  std::mt19937_64 rng(params.seed ^ 0x9e3779b97f4a7c15ULL);
   for (size_t k = 0; k < cells.size(); ++k) {
-    appendCell(sys, unit, cells[k], static_cast<int>(k + 1), params);
+    appendCell(sys, unit, cells[k], static_cast<int>(k + 1), params, rng);
     sys.lo = sys.lo.cwiseMin(cells[k].centre - cells[k].radius * params.shape);
     sys.hi = sys.hi.cwiseMax(cells[k].centre + cells[k].radius * params.shape);
   }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <random>
 #include <vector>
 
 namespace cellgen {
@@ -84,6 +85,22 @@ FluidSpacing chooseSpacing(double radius, long target, std::optional<double> gap
 // Simple cubic lattice points of spacing dx, centred on the origin, with |x| <= radius.
 std::vector<Vec3> fluidLattice(double radius, double dx);
 
+// `count` points on concentric spheres centred on the origin (--fluid-lattice shells), the
+// outermost of radius `outer`, the others spacing apart inwards down to the centre (a point at
+// the origin when outer / spacing is an integer). Shell k holds its share of `count` in
+// proportion to the volume of its slab, [r_k - spacing/2, r_k + spacing/2] (the centre point
+// [0, spacing/2]), so the number density is uniform over the ball of radius outer + spacing/2.
+// The spacing is the one nearest to (4/3 pi (outer + spacing/2)^3 / count)^(1/3) that makes
+// outer / spacing a multiple of 1/2. Each shell is a golden spiral relaxed on its sphere
+// (relaxOnSphere, 40 steps) and turned by a uniform random rotation drawn from rng.
+struct FluidShells {
+  std::vector<Vec3> points;
+  double spacing = 0;    // between shells
+  int shells = 0;        // the centre point not counted
+};
+FluidShells fluidShells(long count, double outer, std::mt19937_64 &rng);
+double shellSpacing(long count, double outer);    // the spacing of fluidShells
+
 // ---- ellipsoidal cells (--ellipsoid, --elongation) ----------------------------------------
 
 // The unit sphere mesh mapped onto the ellipsoid of semi-axes `axes` by x -> (a x, b y, c z). The
@@ -133,7 +150,9 @@ struct BuildParams {
   FluidSpacing spacing;
   Vec3 shape = Vec3::Ones();    // semi-axes of a cell of radius 1: the unit mesh's ellipsoid
   double rho0 = 1000;
-  bool withFluid = true;    // false: walls only (--nfluid 0)
+  bool withFluid = true;     // false: walls only (--nfluid 0)
+  bool shells = false;       // --fluid-lattice shells: the cubic lattice's count on shells
+  std::uint64_t seed = 1;    // of the shells' rotations
   std::optional<double> wallMass;
   double wallThickness = 1e-6;
   double boxMargin = 0;
