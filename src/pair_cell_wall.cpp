@@ -42,6 +42,8 @@ static constexpr int NTERMS = 4;
 static constexpr int NPARAM = 13;
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
+// columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c
+static constexpr int NEAR = 6;
 // 2: the settings begin with -version (1: none); 3: the adhesion's smooth flag after sigma;
 // 4: the triangles' eps and sigma after it
 static constexpr int RESTART_VERSION = 4;
@@ -73,10 +75,11 @@ static inline double ratio_power(double s, double p, int half)
 PairCellWall::PairCellWall(LAMMPS *lmp) :
     Pair(lmp), cut_global(0.0), coeffs(nullptr), restart_version(RESTART_VERSION), load_fluid(0),
     load_wall(0), nmax_load(0), load(nullptr), triangles(0),
-    tris(new CellWallTriangles(lmp, "Pair cell/wall", "the triangle contact's neighbour range"))
+    tris(new CellWallTriangles(lmp, "Pair cell/wall", "the triangle contact's neighbour range")),
+    nmax_near(0), nearest(nullptr), comm_nearest(0)
 {
   writedata = 1;
-  comm_reverse = 3;
+  comm_reverse = NEAR;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -84,6 +87,7 @@ PairCellWall::PairCellWall(LAMMPS *lmp) :
 PairCellWall::~PairCellWall()
 {
   memory->destroy(load);
+  memory->destroy(nearest);
   delete tris;
   if (allocated) {
     memory->destroy(setflag);
@@ -128,6 +132,7 @@ void PairCellWall::compute(int eflag, int vflag)
       triangle_contacts<1>();
     else
       triangle_contacts<0>();
+    check_crossing();
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
@@ -289,7 +294,7 @@ void PairCellWall::find_touching(double margin)
    the distance d to the closest point p, E = 4 eps [(sigma/d)^12 - (sigma/d)^6] + eps for
    d < 2^(1/6) sigma; F_w = -dE/dd (x_w - p)/d, and -lambda_v F_w on vertex v (lambda the
    barycentric coordinates of p), so that F = -grad E and the forces sum to zero
-   (doc/pair_cell_wall.md, Triangles); a wall atom behind a face within reach stops the run
+   (doc/pair_cell_wall.md, Triangles); each atom's nearest such triangle goes into nearest
 ------------------------------------------------------------------------- */
 
 template <int EVFLAG> void PairCellWall::triangle_contacts()
@@ -297,6 +302,14 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
   double **x = atom->x;
   double **f = atom->f;
   const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_near) {
+    nmax_near = atom->nmax;
+    memory->destroy(nearest);
+    memory->create(nearest, nmax_near, NEAR, "pair:nearest");
+  }
+  for (int i = 0; i < nall; i++) nearest[i][0] = -1.0;
   for (const auto &t : touching) {
     const int w = t[0], a = t[1], b = t[2], c = t[3];
     const Coeff &k = coeffs[type[w]][type[b]];
@@ -304,15 +317,26 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
     const double e[3] = {x[w][0] - ft.p[0], x[w][1] - ft.p[1], x[w][2] - ft.p[2]};
     const double dsq = CellTriangle::dot(e, e);
     if (dsq >= k.treach * k.treach) continue;
-    if (ft.face) {
-      // behind the face: (x_w - p) . n < 0, n = (b - a) x (c - a) outward
-      const double ab[3] = {x[b][0] - x[a][0], x[b][1] - x[a][1], x[b][2] - x[a][2]};
-      const double ac[3] = {x[c][0] - x[a][0], x[c][1] - x[a][1], x[c][2] - x[a][2]};
-      double n[3];
-      CellTriangle::cross(ab, ac, n);
-      if (CellTriangle::dot(n, e) < 0.0) crossed(w, a, b, c, sqrt(dsq));
+    if (nearest[w][0] < 0.0 || dsq < nearest[w][0]) {
+      // behind the face: in the face region and (x_w - p) . n <= 0, n = (b - a) x (c - a) outward
+      // (on the face, d = 0, the wall atom has no side)
+      double behind = dsq == 0.0 ? 1.0 : 0.0;
+      if (ft.face && dsq > 0.0) {
+        const double ab[3] = {x[b][0] - x[a][0], x[b][1] - x[a][1], x[b][2] - x[a][2]};
+        const double ac[3] = {x[c][0] - x[a][0], x[c][1] - x[a][1], x[c][2] - x[a][2]};
+        double n[3];
+        CellTriangle::cross(ab, ac, n);
+        behind = CellTriangle::dot(n, e) <= 0.0 ? 1.0 : 0.0;
+      }
+      double *near = nearest[w];
+      near[0] = dsq;
+      near[1] = behind;
+      near[2] = ubuf(atom->molecule[b]).d;
+      near[3] = ubuf(tag[a]).d;
+      near[4] = ubuf(tag[b]).d;
+      near[5] = ubuf(tag[c]).d;
     }
-    if (dsq == 0.0) crossed(w, a, b, c, 0.0);
+    if (dsq == 0.0) continue;    // on the face: check_crossing() stops the run
     const double s3 = cube(k.tsigsq / dsq);
     // F_w = 24 eps [2 (sigma/d)^12 - (sigma/d)^6] (x_w - p) / d^2 (doc/pair_cell_wall.md, eq. T1)
     const double fd = 24.0 * k.teps * s3 * (2.0 * s3 - 1.0) / dsq;
@@ -346,20 +370,36 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
 }
 
 /* ----------------------------------------------------------------------
-   wall atom w is d behind the face of triangle (a, b, c) of another cell, within the contact's
-   reach: the walls have crossed
+   the walls have crossed if a wall atom is behind the face of its nearest triangle of another
+   cell within reach (a wall atom outside a cell thinner than the reach may be behind a far face,
+   but is nearer to the face in front of it); the nearest over all ranks' pairs by reverse comm,
+   only when some rank has an atom behind its nearest triangle
 ------------------------------------------------------------------------- */
 
-void PairCellWall::crossed(int w, int a, int b, int c, double d) const
+void PairCellWall::check_crossing()
 {
-  const tagint *tag = atom->tag;
-  const tagint *molecule = atom->molecule;
-  error->one(FLERR,
-             "Pair cell/wall: walls of cells {} and {} crossed on step {}: wall atom {} (cell {}) "
-             "is {:.4g} m behind the face of triangle {} {} {} (cell {}), within the triangle "
-             "contact's reach",
-             molecule[w], molecule[b], update->ntimestep, tag[w], molecule[w], d, tag[a], tag[b],
-             tag[c], molecule[b]);
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  int mine = 0, any = 0;
+  for (int i = 0; i < nall && !mine; i++)
+    if (nearest[i][0] >= 0.0 && nearest[i][1] > 0.0) mine = 1;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) return;
+  comm_nearest = 1;
+  CellCompat::reverse_comm(comm, this);
+  comm_nearest = 0;
+  for (int i = 0; i < nlocal; i++) {
+    const double *near = nearest[i];
+    if (near[0] < 0.0 || near[1] == 0.0) continue;
+    const tagint cell = static_cast<tagint>(ubuf(near[2]).i);
+    error->one(FLERR,
+               "Pair cell/wall: walls of cells {} and {} crossed on step {}: wall atom {} (cell "
+               "{}) is {:.4g} m behind the face of triangle {} {} {} (cell {}), its nearest "
+               "triangle of another cell",
+               atom->molecule[i], cell, update->ntimestep, atom->tag[i], atom->molecule[i],
+               sqrt(near[0]), static_cast<tagint>(ubuf(near[3]).i),
+               static_cast<tagint>(ubuf(near[4]).i), static_cast<tagint>(ubuf(near[5]).i), cell);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -399,6 +439,11 @@ void PairCellWall::request_wall_load(int fluidtype, int walltype, const std::str
 int PairCellWall::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (comm_nearest) {
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < NEAR; k++) buf[m++] = nearest[i][k];
+    return m;
+  }
   for (int i = first; i < first + n; i++) {
     buf[m++] = load[i][0];
     buf[m++] = load[i][1];
@@ -412,6 +457,15 @@ int PairCellWall::pack_reverse_comm(int n, int first, double *buf)
 void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  if (comm_nearest) {
+    // the nearer of the two
+    for (int k = 0; k < n; k++, m += NEAR) {
+      double *near = nearest[list[k]];
+      if (buf[m] >= 0.0 && (near[0] < 0.0 || buf[m] < near[0]))
+        for (int c = 0; c < NEAR; c++) near[c] = buf[m + c];
+    }
+    return;
+  }
   for (int k = 0; k < n; k++) {
     const int j = list[k];
     load[j][0] += buf[m++];
@@ -424,7 +478,8 @@ void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
 
 double PairCellWall::memory_usage()
 {
-  return Pair::memory_usage() + 3.0 * nmax_load * sizeof(double) + tris->memory_usage() +
+  return Pair::memory_usage() + 3.0 * nmax_load * sizeof(double) +
+      NEAR * nmax_near * sizeof(double) + tris->memory_usage() +
       touching.capacity() * sizeof(touching[0]);
 }
 

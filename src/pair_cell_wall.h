@@ -73,9 +73,14 @@ class PairCellWall : public Pair {
   class CellWallTriangles *tris;    // the triangles, kept by their middle angle atoms
   // (wall atom, a, b, c) within the reach + margin at the last neighbour build
   std::vector<std::array<int, 4>> touching;
+  // per atom, its nearest triangle of another cell within reach this step: d^2, 1 if the atom is
+  // behind its face (else 0), the triangle's cell and the tags of a, b, c (NEAR columns)
+  int nmax_near;
+  double **nearest;
+  int comm_nearest;    // 1 while reverse comm carries nearest (else the wall load)
   void find_touching(double);
   template <int EVFLAG> void triangle_contacts();
-  void crossed(int, int, int, int, double) const;
+  void check_crossing();
 
   void allocate();
   void near_pairs(double);
