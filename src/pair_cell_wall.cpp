@@ -101,13 +101,14 @@ PairCellWall::~PairCellWall()
 void PairCellWall::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  // at a build, or at a run's setup without one ('run ... pre no'), where the atoms may already
-  // be skin/2 from their build positions: then twice the skin
+  // the wall triangles on every reneighbouring (the ghosts' by forward comm)
   if (triangles && neighbor->ago == 0) {
     tris->grow(atom->nmax);
     tris->build();
     CellCompat::forward_comm(comm, this);
   }
+  // the pairs at a build, or at a run's setup without one ('run ... pre no'), where the atoms may
+  // already be skin/2 from their build positions: then twice the skin
   if (neighbor->ago == 0 || update->setupflag) {
     const double margin = neighbor->ago == 0 ? neighbor->skin : 2.0 * neighbor->skin;
     near_pairs(margin);
