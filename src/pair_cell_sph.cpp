@@ -15,6 +15,7 @@
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "cell_triangle.h"
+#include "cell_wall_triangles.h"
 #include "cell_water.h"
 #include "comm.h"
 #include "domain.h"
@@ -57,8 +58,6 @@ static const double HGROW = 0.05;
 // whose h had no value yet (h starts from the pair_coeff value)
 static const int HSTART = 4;
 
-// wall boundary: the triangles one wall atom keeps (it is their middle angle atom), at most
-static const int MAXTRI = 8;
 // contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
 static const double CONTACT_H = 2.5;
 // kernel completion evaluated exactly every REFRESH steps (and on reneighbouring), linearised in
@@ -85,12 +84,12 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
     hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
     boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr),
-    adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr), tricount(nullptr),
-    trifirst(nullptr), edgemax(0.0), edgecap(0.0), deficit0(nullptr), xbase(nullptr),
-    gradsum(nullptr), disp(nullptr), slot(nullptr), refreshing(1), refreshed(-1),
-    commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0),
-    pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
-    pairmu(nullptr), maxfirst(0), maxpairs(0)
+    adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
+    tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
+    deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr),
+    refreshing(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr),
+    rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr),
+    pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -116,6 +115,7 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairmu);
   memory->destroy(pairw);
   memory->destroy(pairwj);
+  delete tris;
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(adhesion);
@@ -148,7 +148,11 @@ void PairCellSPH::compute(int eflag, int vflag)
   if (temp_set) update_viscosity();
 
   if (walls) {
-    if (neighbor->ago == 0 || grown) wall_triangles();
+    if (neighbor->ago == 0 || grown) {
+      tris->build();
+      commode = COMM_TRIANGLES;
+      CellCompat::forward_comm(comm, this);
+    }
     refreshing = neighbor->ago == 0 || grown || update->ntimestep - refreshed >= REFRESH ||
         update->ntimestep < refreshed;
     if (refreshing) refreshed = update->ntimestep;
@@ -522,8 +526,6 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(rhoinv);
   memory->destroy(deficit);
   memory->destroy(wallload);
-  memory->destroy(tricount);
-  memory->destroy(trifirst);
   memory->destroy(deficit0);
   memory->destroy(xbase);
   memory->destroy(gradsum);
@@ -560,8 +562,7 @@ void PairCellSPH::grow_peratom()
   if (!walls) return;
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
-  memory->create(tricount, nmax, "pair:tricount");
-  memory->create(trifirst, nmax, "pair:trifirst");
+  tris->grow(nmax);
   memory->create(deficit0, nmax, "pair:deficit0");
   memory->create(xbase, nmax, 3, "pair:xbase");
   memory->create(gradsum, nmax, 3, "pair:gradsum");
@@ -801,8 +802,9 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
   const double *xf = x[f];
   const double support = CellKernel::support(kernel);
   const double touch = p.reach + neighbor->skin;
-  for (int t = trifirst[b]; t < trifirst[b] + tricount[b]; t++) {
-    const int a = trivert[2 * t], c = trivert[2 * t + 1];
+  const double edgemax = tris->edge_max();
+  for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
+    const int a = tris->a(t), c = tris->c(t);
     // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
     if (a < 0 || c < 0) continue;
     const double ra[3] = {x[a][0] - xf[0], x[a][1] - xf[1], x[a][2] - xf[2]};
@@ -1092,80 +1094,6 @@ void PairCellSPH::contact(int f, int a, int b, int c)
                              {fd * e[0], fd * e[1], fd * e[2]},
                              {ft.l[0], ft.l[1], ft.l[2]},
                              p.fcontact * p.reach * s * s * s / 3.0});
-}
-
-/* ----------------------------------------------------------------------
-   longest edge b-a, b-c of the wall triangles now, over the angles of owned atoms whose other
-   atoms this rank has (all at the start; enough to measure the wall)
-------------------------------------------------------------------------- */
-
-double PairCellSPH::longest_edge() const
-{
-  double **x = atom->x;
-  double edge = 0.0, all = 0.0;
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int m = 0; m < atom->num_angle[i]; m++)
-      for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
-        const int k = atom->map(tag);
-        if (k < 0 || atom->angle_atom2[i][m] != atom->tag[i]) continue;
-        double del[3] = {x[k][0] - x[i][0], x[k][1] - x[i][1], x[k][2] - x[i][2]};
-        domain->minimum_image(del);
-        edge = std::max(edge, CellTriangle::dot(del, del));
-      }
-  MPI_Allreduce(&edge, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return sqrt(all);
-}
-
-/* ----------------------------------------------------------------------
-   the triangles each wall atom keeps (it is the middle atom b of the angle a b c), as local
-   indices of a and c: owned atoms from their angles, ghosts from the tags their owners send,
-   each vertex the image closest to b
-------------------------------------------------------------------------- */
-
-void PairCellSPH::wall_triangles()
-{
-  double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  double edge = 0.0;
-  trivert.clear();
-  tritag.clear();
-  for (int i = 0; i < nlocal; i++) {
-    tricount[i] = 0;
-    trifirst[i] = static_cast<int>(trivert.size()) / 2;
-    for (int m = 0; m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
-      if (tricount[i] == MAXTRI)
-        error->one(FLERR,
-                   "Pair cell/sph: wall atom {} is the middle atom of more than {} wall "
-                   "triangles (angles); the wall boundary supports at most {}",
-                   atom->tag[i], MAXTRI, MAXTRI);
-      for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
-        const int k = atom->map(tag);
-        const int v = k < 0 ? -1 : domain->closest_image(i, k);
-        if (v >= 0) {
-          const double del[3] = {x[v][0] - x[i][0], x[v][1] - x[i][1], x[v][2] - x[i][2]};
-          edge = std::max(edge, CellTriangle::dot(del, del));
-        }
-        trivert.push_back(v);
-        tritag.push_back(tag);
-      }
-      tricount[i]++;
-    }
-  }
-  // longest edge b-a, b-c until the next reneighbouring: now + the skin (each end moves < skin/2)
-  edge = sqrt(edge);
-  MPI_Allreduce(&edge, &edgemax, 1, MPI_DOUBLE, MPI_MAX, world);
-  edgemax += neighbor->skin;
-  if (edgemax > edgecap)
-    error->all(FLERR,
-               "Pair cell/sph: a wall edge grew to {:.4g} m on step {}, beyond the {:.4g} m the "
-               "wall boundary's neighbour range allows in this run (1.5 x the longest edge at the "
-               "run's start): split the run (each run command measures the wall again)",
-               edgemax - neighbor->skin, update->ntimestep, edgecap - neighbor->skin);
-  for (int i = nlocal; i < nall; i++) tricount[i] = 0;
-  commode = COMM_TRIANGLES;
-  CellCompat::forward_comm(comm, this);
 }
 
 /* ----------------------------------------------------------------------
@@ -1721,8 +1649,8 @@ void PairCellSPH::init_style()
                      "2022 is delay 10): atoms may move past the skin between builds",
                      neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
     tabulate_phi();
-    comm_forward = std::max(3, 1 + 2 * MAXTRI);
-    edgecap = 1.5 * longest_edge() + neighbor->skin;
+    comm_forward = std::max(3, CellWallTriangles::COMM_SIZE);
+    tris->start_run();
   }
   writedata = all_set ? 1 : 0;
   if (viscous && !comm->ghost_velocity)
@@ -1784,7 +1712,7 @@ double PairCellSPH::init_one(int i, int j)
     const double reach = h[f][f] / CONTACT_H;
     // the neighbour range reaches every triangle whose centroid is inside the kernel support:
     // the centroid is within 2/3 of the longest edge of the triangle's keeper
-    const double range = support + 2.0 / 3.0 * (edgecap - neighbor->skin);
+    const double range = support + 2.0 / 3.0 * (tris->edge_cap() - neighbor->skin);
     // adhesion: a_f = adhk m_f / h_f with adhk = W / (rho0 c_k) (doc/pair_cell_sph.md, eq. A2)
     const double k = adhesion[i][j] / (rho0[f][f] * planeint);
     if (adhk[f] != 0.0 && adhk[f] != k)
@@ -2110,15 +2038,7 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES) {
-    for (int k = 0; k < n; k++) {
-      const int i = list[k];
-      buf[m++] = tricount[i];
-      for (int v = 2 * trifirst[i]; v < 2 * (trifirst[i] + tricount[i]); v++)
-        buf[m++] = ubuf(tritag[v]).d;
-    }
-    return m;
-  }
+  if (commode == COMM_TRIANGLES) return tris->pack(n, list, buf);
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
     for (int k = 0; k < n; k++) buf[m++] = hv[list[k]];
@@ -2146,16 +2066,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   if (commode == COMM_TRIANGLES) {
-    for (int i = first; i < first + n; i++) {
-      tricount[i] = static_cast<int>(buf[m++]);
-      trifirst[i] = static_cast<int>(trivert.size()) / 2;
-      for (int v = 0; v < 2 * tricount[i]; v++) {
-        const tagint tag = static_cast<tagint>(ubuf(buf[m++]).i);
-        const int k = atom->map(tag);
-        trivert.push_back(k < 0 ? -1 : domain->closest_image(i, k));
-        tritag.push_back(tag);
-      }
-    }
+    tris->unpack(n, first, buf);
     return;
   }
   if (commode == COMM_H) {
@@ -2247,10 +2158,10 @@ double PairCellSPH::memory_usage()
     bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
         step.capacity() * sizeof(double);
   if (walls)
-    bytes += nmax * (14.0 * sizeof(double) + 4.0 * sizeof(int)) + terms.capacity() * sizeof(Term) +
-        contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
-        trivert.capacity() * sizeof(int) + tritag.capacity() * sizeof(tagint) +
-        fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
-        hsplit.capacity() * sizeof(double) + boundarypairs.capacity() * sizeof(boundarypairs[0]);
+    bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
+        terms.capacity() * sizeof(Term) + contacts.capacity() * sizeof(Contact) +
+        touching.capacity() * sizeof(touching[0]) + fluidfirst.capacity() * sizeof(int) +
+        fluidj.capacity() * sizeof(int) + hsplit.capacity() * sizeof(double) +
+        boundarypairs.capacity() * sizeof(boundarypairs[0]);
   return bytes;
 }

@@ -126,15 +126,9 @@ class PairCellSPH : public Pair {
   double planeint;    // c_k: integral over z/h of 1 - gamma beside a plane = <r/h>/4 of the kernel
   double adhesion_a(int) const;
   double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
-  // the wall triangles: each one is kept by its vertex b (the angle's middle atom), as the local
-  // indices of a and c, found again on every reneighbouring (owned atoms from their angles,
-  // ghosts by forward comm of the tags)
-  int *tricount, *trifirst;      // triangles kept by atom i: trivert[2 trifirst[i]] ...
-  std::vector<int> trivert;      // a, c of each kept triangle (-1: not on this rank)
-  std::vector<tagint> tritag;    // their tags
-  double edgemax;                // longest edge b-a or b-c of a kept triangle, + the skin
-  double edgecap;                // edgemax allowed in this run: the boundary pairs' cutoff is
-                                 // the kernel support + edgecap
+  // the wall triangles, each kept by its middle angle atom b (cell_wall_triangles.h); the
+  // boundary pairs' cutoff is the kernel support + 2/3 of the run's edge allowance
+  class CellWallTriangles *tris;
   struct Term {
     int f, v;          // fluid atom, wall vertex
     double grad[3];    // grad_v D_f: derivative of 1 - gamma_f in the vertex's position
@@ -193,14 +187,12 @@ class PairCellSPH : public Pair {
   double run_h(int) const;
   void unsolvable(int, double) const;
   template <int EVFLAG> void wall_forces();
-  void wall_triangles();
   template <int PERATOM> void boundary_terms(int, int, const PairConst &);
   void split_list(double);
   bool outgrown() const;
   void merge_terms();
   void linear_deficit();
   void contact(int, int, int, int);
-  double longest_edge() const;
   void tabulate_phi();
   void phi_beyond(double q, double &value, double &slope) const;
   void apply_eos();

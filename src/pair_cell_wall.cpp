@@ -3,6 +3,8 @@
    pair_style cell/wall: the central short-range forces between a wall particle and a fluid
    particle (repulsion F^rw = -F^rf, adhesion F^a) and between non-bonded wall particles (contact).
    Each term is switched on per type pair; a per-pair bitmask keeps off terms out of the loop.
+   With triangles, a wall atom also meets the triangles of the other cells' walls (the distance to
+   each triangle's closest point), and a wall atom found behind another cell's face stops the run.
    Bonded wall pairs of one cell are excluded through special_bonds (factor_lj; a bonded pair of two
    cells, a junction, keeps weight 1), fluid-fluid pairs belong to
    pair_style cell/sph (under hybrid/overlay).
@@ -14,6 +16,8 @@
 #include "cell_compat.h"
 #include "cell_params.h"
 #include "cell_restart.h"
+#include "cell_triangle.h"
+#include "cell_wall_triangles.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -23,6 +27,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -30,18 +35,23 @@ using namespace LAMMPS_NS;
 using MathSpecial::cube;
 using MathSpecial::powint;
 
-static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact"};
-static const int TERM_VALUES[] = {2, 4, 2};    // required numbers after each keyword
-static constexpr int NTERMS = 3;
-static constexpr int NPARAM = 11;    // f0 r0 p1 p2 D alpha ra rc eps sigma smooth (version 3)
+static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact", "triangles"};
+static const int TERM_VALUES[] = {2, 4, 2, 2};    // required numbers after each keyword
+static constexpr int NTERMS = 4;
+// f0 r0 p1 p2 D alpha ra rc eps sigma smooth (version 3) teps tsigma (version 4)
+static constexpr int NPARAM = 13;
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
-// 2: the settings begin with -version (1: none); 3: the adhesion's smooth flag after sigma
-static constexpr int RESTART_VERSION = 3;
+// columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c
+static constexpr int NEAR = 6;
+// 2: the settings begin with -version (1: none); 3: the adhesion's smooth flag after sigma;
+// 4: the triangles' eps and sigma after it
+static constexpr int RESTART_VERSION = 4;
 
 static const char *const COEFF_USAGE =
     "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] "
-    "[contact eps sigma]', 'pair_coeff I J none' or 'pair_coeff I J file <parameter file> "
+    "[contact eps sigma] [triangles eps sigma]', 'pair_coeff I J none' or 'pair_coeff I J file "
+    "<parameter file> "
     "wallfluid|wallwall'";
 
 /* ----------------------------------------------------------------------
@@ -64,10 +74,12 @@ static inline double ratio_power(double s, double p, int half)
 
 PairCellWall::PairCellWall(LAMMPS *lmp) :
     Pair(lmp), cut_global(0.0), coeffs(nullptr), restart_version(RESTART_VERSION), load_fluid(0),
-    load_wall(0), nmax_load(0), load(nullptr)
+    load_wall(0), nmax_load(0), load(nullptr), triangles(0),
+    tris(new CellWallTriangles(lmp, "Pair cell/wall", "the triangle contact's neighbour range")),
+    nmax_near(0), nearest(nullptr), comm_nearest(0)
 {
   writedata = 1;
-  comm_reverse = 3;
+  comm_reverse = NEAR;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -75,6 +87,8 @@ PairCellWall::PairCellWall(LAMMPS *lmp) :
 PairCellWall::~PairCellWall()
 {
   memory->destroy(load);
+  memory->destroy(nearest);
+  delete tris;
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -87,12 +101,19 @@ PairCellWall::~PairCellWall()
 void PairCellWall::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  // at a build, or at a run's setup without one ('run ... pre no'), where the atoms may already
-  // be skin/2 from their build positions: then twice the skin
-  if (neighbor->ago == 0)
-    near_pairs(neighbor->skin);
-  else if (update->setupflag)
-    near_pairs(2.0 * neighbor->skin);
+  // the wall triangles on every reneighbouring (the ghosts' by forward comm)
+  if (triangles && neighbor->ago == 0) {
+    tris->grow(atom->nmax);
+    tris->build();
+    CellCompat::forward_comm(comm, this);
+  }
+  // the pairs at a build, or at a run's setup without one ('run ... pre no'), where the atoms may
+  // already be skin/2 from their build positions: then twice the skin
+  if (neighbor->ago == 0 || update->setupflag) {
+    const double margin = neighbor->ago == 0 ? neighbor->skin : 2.0 * neighbor->skin;
+    near_pairs(margin);
+    if (triangles) find_touching(margin);
+  }
 
   if (load_wall) {
     if (atom->nmax > nmax_load) {
@@ -106,6 +127,13 @@ void PairCellWall::compute(int eflag, int vflag)
     if (force->newton_pair) CellCompat::reverse_comm(comm, this);
   } else {
     eval<0>(eflag);
+  }
+  if (triangles) {
+    if (evflag)
+      triangle_contacts<1>();
+    else
+      triangle_contacts<0>();
+    check_crossing();
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
@@ -131,7 +159,7 @@ void PairCellWall::near_pairs(double margin)
     nearfirst[ii] = static_cast<int>(nearj.size());
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double cutsqij = cutsq[type[i]][type[j]];
+      const double cutsqij = coeffs[type[i]][type[j]].paircutsq;
       if (cutsqij <= 0.0) continue;
       const double reach = sqrt(cutsqij) + margin;
       const double delx = x[i][0] - x[j][0];
@@ -168,7 +196,6 @@ template <int LOAD> void PairCellWall::eval(int eflag)
     const double ztmp = x[i][2];
     const int itype = type[i];
     const Coeff *coeffi = coeffs[itype];
-    const double *cutsqi = cutsq[itype];
     const int *jlist = &nearj[nearfirst[ii]];
     const int jnum = nearfirst[ii + 1] - nearfirst[ii];
 
@@ -184,7 +211,7 @@ template <int LOAD> void PairCellWall::eval(int eflag)
       const double delz = ztmp - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const int jtype = type[j];
-      if (rsq >= cutsqi[jtype]) continue;
+      if (rsq >= coeffi[jtype].paircutsq) continue;
 
       double fpair;
       const double evdwl = factor_lj * evaluate(coeffi[jtype], rsq, eflag, fpair);
@@ -215,6 +242,182 @@ template <int LOAD> void PairCellWall::eval(int eflag)
 }
 
 /* ----------------------------------------------------------------------
+   at each neighbour build: every (wall atom, triangle of another cell) whose closest point is
+   within the triangles' reach + margin, from the list's pairs (wall atom, the triangle's keeper
+   b) of type pairs with the term; the rest cannot come within reach before the next build (the
+   distance moves by less than the displacements of the atom and of one vertex)
+------------------------------------------------------------------------- */
+
+void PairCellWall::find_touching(double margin)
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const tagint *molecule = atom->molecule;
+  const double edge = tris->edge_max();
+  touching.clear();
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const Coeff &c = coeffs[type[i]][type[j]];
+      if (!(c.terms & TRIANGLES) || molecule[i] == molecule[j]) continue;
+      // a triangle within reach of x has its keeper within reach + its longest edge b-a, b-c
+      const double reach = c.treach + margin;
+      const double keep = reach + edge;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      if (delx * delx + dely * dely + delz * delz >= keep * keep) continue;
+      for (const int w : {i, j}) {
+        const int b = w == i ? j : i;
+        for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
+          const int a = tris->a(t), v = tris->c(t);
+          if (a < 0 || v < 0)
+            error->one(FLERR,
+                       "Pair cell/wall: a vertex of a wall triangle kept by atom {} (cell {}) "
+                       "is not on this rank on step {}, and the triangle may be within reach of "
+                       "wall atom {} (cell {}): raise the ghost cutoff (comm_modify cutoff, now "
+                       "{:.4g} m) to the triangles' reach + twice the longest wall edge",
+                       atom->tag[b], molecule[b], update->ntimestep, atom->tag[w], molecule[w],
+                       comm->get_comm_cutoff());
+          const CellTriangle::Foot ft = CellTriangle::closest(x[w], x[a], x[b], x[v]);
+          const double e[3] = {x[w][0] - ft.p[0], x[w][1] - ft.p[1], x[w][2] - ft.p[2]};
+          if (CellTriangle::dot(e, e) < reach * reach) touching.push_back({w, a, b, v});
+        }
+      }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the contact of each wall atom w with the triangles (a, b, c) of other cells it touches: WCA of
+   the distance d to the closest point p, E = 4 eps [(sigma/d)^12 - (sigma/d)^6] + eps for
+   d < 2^(1/6) sigma; F_w = -dE/dd (x_w - p)/d, and -lambda_v F_w on vertex v (lambda the
+   barycentric coordinates of p), so that F = -grad E and the forces sum to zero
+   (doc/pair_cell_wall.md, Triangles); each atom's nearest such triangle goes into nearest
+------------------------------------------------------------------------- */
+
+template <int EVFLAG> void PairCellWall::triangle_contacts()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_near) {
+    nmax_near = atom->nmax;
+    memory->destroy(nearest);
+    memory->create(nearest, nmax_near, NEAR, "pair:nearest");
+  }
+  for (int i = 0; i < nall; i++) nearest[i][0] = -1.0;
+  for (const auto &t : touching) {
+    const int w = t[0], a = t[1], b = t[2], c = t[3];
+    const Coeff &k = coeffs[type[w]][type[b]];
+    const CellTriangle::Foot ft = CellTriangle::closest(x[w], x[a], x[b], x[c]);
+    const double e[3] = {x[w][0] - ft.p[0], x[w][1] - ft.p[1], x[w][2] - ft.p[2]};
+    const double dsq = CellTriangle::dot(e, e);
+    if (dsq >= k.treach * k.treach) continue;
+    if (nearest[w][0] < 0.0 || dsq < nearest[w][0]) {
+      // behind the face: in the face region and (x_w - p) . n <= 0, n = (b - a) x (c - a) outward
+      // (on the face, d = 0, the wall atom has no side)
+      double behind = dsq == 0.0 ? 1.0 : 0.0;
+      if (ft.face && dsq > 0.0) {
+        const double ab[3] = {x[b][0] - x[a][0], x[b][1] - x[a][1], x[b][2] - x[a][2]};
+        const double ac[3] = {x[c][0] - x[a][0], x[c][1] - x[a][1], x[c][2] - x[a][2]};
+        double n[3];
+        CellTriangle::cross(ab, ac, n);
+        behind = CellTriangle::dot(n, e) <= 0.0 ? 1.0 : 0.0;
+      }
+      double *near = nearest[w];
+      near[0] = dsq;
+      near[1] = behind;
+      near[2] = ubuf(atom->molecule[b]).d;
+      near[3] = ubuf(tag[a]).d;
+      near[4] = ubuf(tag[b]).d;
+      near[5] = ubuf(tag[c]).d;
+    }
+    if (dsq == 0.0) continue;    // on the face: check_crossing() stops the run
+    const double s3 = cube(k.tsigsq / dsq);
+    // F_w = 24 eps [2 (sigma/d)^12 - (sigma/d)^6] (x_w - p) / d^2 (doc/pair_cell_wall.md, eq. T1)
+    const double fd = 24.0 * k.teps * s3 * (2.0 * s3 - 1.0) / dsq;
+    const double fw[3] = {fd * e[0], fd * e[1], fd * e[2]};
+    double fv[3][3];
+    const int v[3] = {a, b, c};
+    for (int m = 0; m < 3; m++)
+      for (int d = 0; d < 3; d++) {
+        fv[m][d] = -ft.l[m] * fw[d];
+        f[v[m]][d] += fv[m][d];
+      }
+    for (int d = 0; d < 3; d++) f[w][d] += fw[d];
+    if (EVFLAG) {
+      // E = 4 eps [(sigma/d)^12 - (sigma/d)^6] + eps, zero at the reach
+      const double energy = 4.0 * k.teps * s3 * (s3 - 1.0) + k.teps;
+      if (eflag_global) eng_vdwl += energy;
+      if (eflag_atom) eatom[w] += energy;
+      if (vflag_either) {
+        // virial about vertex c: sum over w, a, b of (x - x_c) F
+        double dwc[3], dac[3], dbc[3];
+        for (int d = 0; d < 3; d++) {
+          dwc[d] = x[w][d] - x[c][d];
+          dac[d] = x[a][d] - x[c][d];
+          dbc[d] = x[b][d] - x[c][d];
+        }
+        double force[3] = {fw[0], fw[1], fw[2]};
+        v_tally4(w, a, b, c, force, fv[0], fv[1], dwc, dac, dbc);
+      }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the walls have crossed if a wall atom is behind the face of its nearest triangle of another
+   cell within reach (a wall atom outside a cell thinner than the reach may be behind a far face,
+   but is nearer to the face in front of it); the nearest over all ranks' pairs by reverse comm,
+   only when some rank has an atom behind its nearest triangle
+------------------------------------------------------------------------- */
+
+void PairCellWall::check_crossing()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  int mine = 0, any = 0;
+  for (int i = 0; i < nall && !mine; i++)
+    if (nearest[i][0] >= 0.0 && nearest[i][1] > 0.0) mine = 1;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) return;
+  comm_nearest = 1;
+  CellCompat::reverse_comm(comm, this);
+  comm_nearest = 0;
+  for (int i = 0; i < nlocal; i++) {
+    const double *near = nearest[i];
+    if (near[0] < 0.0 || near[1] == 0.0) continue;
+    const tagint cell = static_cast<tagint>(ubuf(near[2]).i);
+    error->one(FLERR,
+               "Pair cell/wall: walls of cells {} and {} crossed on step {}: wall atom {} (cell "
+               "{}) is {:.4g} m behind the face of triangle {} {} {} (cell {}), its nearest "
+               "triangle of another cell",
+               atom->molecule[i], cell, update->ntimestep, atom->tag[i], atom->molecule[i],
+               sqrt(near[0]), static_cast<tagint>(ubuf(near[3]).i),
+               static_cast<tagint>(ubuf(near[4]).i), static_cast<tagint>(ubuf(near[5]).i), cell);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairCellWall::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  return tris->pack(n, list, buf);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellWall::unpack_forward_comm(int n, int first, double *buf)
+{
+  tris->unpack(n, first, buf);
+}
+
+/* ----------------------------------------------------------------------
    tally the fluid-to-wall force of the cell's own fluid on wall atoms from the next force
    evaluation on; one pair of types at a time
 ------------------------------------------------------------------------- */
@@ -237,6 +440,11 @@ void PairCellWall::request_wall_load(int fluidtype, int walltype, const std::str
 int PairCellWall::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (comm_nearest) {
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < NEAR; k++) buf[m++] = nearest[i][k];
+    return m;
+  }
   for (int i = first; i < first + n; i++) {
     buf[m++] = load[i][0];
     buf[m++] = load[i][1];
@@ -250,6 +458,15 @@ int PairCellWall::pack_reverse_comm(int n, int first, double *buf)
 void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  if (comm_nearest) {
+    // the nearer of the two
+    for (int k = 0; k < n; k++, m += NEAR) {
+      double *near = nearest[list[k]];
+      if (buf[m] >= 0.0 && (near[0] < 0.0 || buf[m] < near[0]))
+        for (int c = 0; c < NEAR; c++) near[c] = buf[m + c];
+    }
+    return;
+  }
   for (int k = 0; k < n; k++) {
     const int j = list[k];
     load[j][0] += buf[m++];
@@ -262,7 +479,9 @@ void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
 
 double PairCellWall::memory_usage()
 {
-  return Pair::memory_usage() + 3.0 * nmax_load * sizeof(double);
+  return Pair::memory_usage() + 3.0 * nmax_load * sizeof(double) +
+      NEAR * nmax_near * sizeof(double) + tris->memory_usage() +
+      touching.capacity() * sizeof(touching[0]);
 }
 
 /* ----------------------------------------------------------------------
@@ -372,7 +591,7 @@ void PairCellWall::coeff(int narg, char **arg)
       if (k == NTERMS)
         error->all(FLERR,
                    "Pair_coeff cell/wall: unknown keyword '{}' (expected repulsion, adhesion, "
-                   "contact, none or file)",
+                   "contact, triangles, none or file)",
                    arg[iarg]);
       const int term = 1 << k;
       if (c.terms & term) error->all(FLERR, "Pair_coeff cell/wall: {} given twice", TERM_NAMES[k]);
@@ -406,9 +625,12 @@ void PairCellWall::coeff(int narg, char **arg)
           c.smooth = 1;
           iarg++;
         }
-      } else {
+      } else if (term == CONTACT) {
         c.eps = v[0];
         c.sigma = v[1];
+      } else {
+        c.teps = v[0];
+        c.tsigma = v[1];
       }
     }
   }
@@ -501,11 +723,17 @@ void PairCellWall::check(const Coeff &c, const std::string &from)
     if (!(c.sigma > 0.0))
       error->all(FLERR, "Pair_coeff cell/wall: contact sigma = {} must be > 0{}", c.sigma, from);
   }
+  if (c.terms & TRIANGLES) {
+    if (!(c.teps > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: triangles eps = {} must be > 0{}", c.teps, from);
+    if (!(c.tsigma > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: triangles sigma = {} must be > 0{}", c.tsigma, from);
+  }
 }
 
 /* ----------------------------------------------------------------------
    request a half list, forget wall-load requests (their styles renew them in their init); warn if
-   contact would act between bonded wall particles
+   contact would act between bonded wall particles; with triangles, measure the wall's edges
 ------------------------------------------------------------------------- */
 
 void PairCellWall::init_style()
@@ -523,6 +751,33 @@ void PairCellWall::init_style()
                    "Pair cell/wall: contact acts between bonded wall particles (special_bonds lj "
                    "weights 1-2 = {}, 1-3 = {}); use 'special_bonds lj 0 0 1'",
                    special_lj[1], special_lj[2]);
+
+  triangles = 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && (coeffs[i][j].terms & TRIANGLES)) triangles = 1;
+  if (!triangles) return;
+  if (!atom->molecule_flag || !atom->num_angle || !force->angle)
+    error->all(FLERR,
+               "Pair cell/wall: triangles needs cell (molecule) IDs and the wall triangles as "
+               "angles: use atom_style angle or molecular and an angle style (angle_style zero)");
+  if (!force->newton_pair)
+    error->all(FLERR,
+               "Pair cell/wall: triangles needs newton pair on (the reactions go to ghost "
+               "triangle vertices)");
+  // LAMMPS drops the pairs whose lj and coul weights are both 0 from the list; a pair of two
+  // cells may be a special pair (the two atoms of a junction bond are 1-2)
+  const double *special_coul = force->special_coul;
+  for (int k = 1; k <= 3; k++)
+    if (special_lj[k] == 0.0 && special_coul[k] == 0.0)
+      error->all(FLERR,
+                 "Pair cell/wall: triangles needs every pair of atoms of two cells in the "
+                 "neighbour list, and special_bonds lj and coul weights 1-{} = 0 drop the 1-{} "
+                 "pairs (a junction bond's atoms are 1-2): give them coul weight 1, e.g. "
+                 "'special_bonds lj 0 1 1 coul 1 1 1'",
+                 k + 1, k + 1);
+  comm_forward = CellWallTriangles::COMM_SIZE;
+  tris->start_run();
 }
 
 /* ----------------------------------------------------------------------
@@ -572,6 +827,20 @@ double PairCellWall::init_one(int i, int j)
       longest = "contact cutoff 2^(1/6) sigma";
     }
   }
+  c.paircutsq = cut * cut;
+  double neighbour = cut;
+  if (c.terms & TRIANGLES) {
+    c.tsigsq = c.tsigma * c.tsigma;
+    // WCA reach 2^(1/6) sigma
+    c.treach = pow(2.0, 1.0 / 6.0) * c.tsigma;
+    if (c.treach > cut) {
+      cut = c.treach;
+      longest = "triangles reach 2^(1/6) sigma";
+    }
+    // the neighbour list reaches the keeper b of every triangle within reach: reach + its
+    // longest edge b-a, b-c (the run's allowance, which holds the skin)
+    neighbour = std::max(neighbour, c.treach + tris->edge_cap());
+  }
   if (cut > cut_global)
     error->all(FLERR,
                "Pair cell/wall: atom types {} {} reach {} ({}), beyond the pair_style cell/wall "
@@ -579,7 +848,7 @@ double PairCellWall::init_one(int i, int j)
                i, j, cut, longest, cut_global);
 
   coeffs[j][i] = c;
-  return cut;
+  return neighbour;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -592,8 +861,19 @@ void PairCellWall::write_restart(FILE *fp)
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (setflag[i][j]) {
         const Coeff &c = coeffs[i][j];
-        const double v[NPARAM] = {
-            c.f0, c.r0, c.p1, c.p2, c.D, c.alpha, c.ra, c.rc, c.eps, c.sigma, (double) c.smooth};
+        const double v[NPARAM] = {c.f0,
+                                  c.r0,
+                                  c.p1,
+                                  c.p2,
+                                  c.D,
+                                  c.alpha,
+                                  c.ra,
+                                  c.rc,
+                                  c.eps,
+                                  c.sigma,
+                                  (double) c.smooth,
+                                  c.teps,
+                                  c.tsigma};
         fwrite(&c.terms, sizeof(int), 1, fp);
         fwrite(v, sizeof(double), NPARAM, fp);
       }
@@ -614,8 +894,10 @@ void PairCellWall::read_restart(FILE *fp)
       if (setflag[i][j]) {
         int terms = 0;
         double v[NPARAM] = {};
-        // versions 1 and 2 end each pair at sigma (no smooth flag: a cut adhesion)
-        const int nparam = restart_version >= 3 ? NPARAM : NPARAM - 1;
+        // versions 1 and 2 end each pair at sigma (no smooth flag: a cut adhesion), 3 at smooth
+        const int nparam = restart_version >= 4 ? NPARAM
+            : restart_version >= 3              ? NPARAM - 2
+                                                : NPARAM - 3;
         if (me == 0) {
           utils::sfread(FLERR, &terms, sizeof(int), 1, fp, nullptr, error);
           utils::sfread(FLERR, v, sizeof(double), nparam, fp, nullptr, error);
@@ -635,6 +917,8 @@ void PairCellWall::read_restart(FILE *fp)
         c.eps = v[8];
         c.sigma = v[9];
         c.smooth = (int) v[10];
+        c.teps = v[11];
+        c.tsigma = v[12];
         coeffs[i][j] = c;
       }
     }
@@ -672,6 +956,7 @@ std::string PairCellWall::describe(const Coeff &c) const
     s +=
         fmt::format(" adhesion {} {} {} {}{}", c.D, c.alpha, c.ra, c.rc, c.smooth ? " smooth" : "");
   if (c.terms & CONTACT) s += fmt::format(" contact {} {}", c.eps, c.sigma);
+  if (c.terms & TRIANGLES) s += fmt::format(" triangles {} {}", c.teps, c.tsigma);
   return s.empty() ? " none" : s;
 }
 

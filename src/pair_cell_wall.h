@@ -9,6 +9,7 @@
 
 #include "pair.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@ class PairCellWall : public Pair {
   void write_data(FILE *) override;
   void write_data_all(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
@@ -39,7 +42,7 @@ class PairCellWall : public Pair {
   void request_wall_load(int fluidtype, int walltype, const std::string &who);
   double **wall_load() const { return load; }
 
-  enum Term { REPULSION = 1 << 0, ADHESION = 1 << 1, CONTACT = 1 << 2 };
+  enum Term { REPULSION = 1 << 0, ADHESION = 1 << 1, CONTACT = 1 << 2, TRIANGLES = 1 << 3 };
 
   // the terms of one type pair: parameters as given, then constants precomputed in init_one()
   struct Coeff {
@@ -48,8 +51,11 @@ class PairCellWall : public Pair {
     double D, alpha, ra, rc;    // adhesion
     int smooth;                 // adhesion force tapered to zero at rc (1) or cut there (0)
     double eps, sigma;          // contact
+    double teps, tsigma;        // triangles: contact with the other walls' triangles
     int half1, half2;           // p1/2, p2/2 when they are integers (powint), else 0
     double r0sq, rasq, rcsq, two_alpha_d, taper, u_rc, u_below_ra, sigsq, contactsq;
+    double tsigsq, treach;    // triangles: sigma^2, reach 2^(1/6) sigma
+    double paircutsq;         // (reach of the pair terms)^2: repulsion, adhesion, contact
   };
 
  protected:
@@ -61,6 +67,20 @@ class PairCellWall : public Pair {
   double **load;
   // the list's pairs within their cutoff + margin, from each neighbour build (near_pairs)
   std::vector<int> nearfirst, nearj;
+
+  // triangles: a wall atom against the triangles of other cells' walls (doc/pair_cell_wall.md)
+  int triangles;                    // 1 if any type pair has the term
+  class CellWallTriangles *tris;    // the triangles, kept by their middle angle atoms
+  // (wall atom, a, b, c) within the reach + margin at the last neighbour build
+  std::vector<std::array<int, 4>> touching;
+  // per atom, its nearest triangle of another cell within reach this step: d^2, 1 if the atom is
+  // behind its face (else 0), the triangle's cell and the tags of a, b, c (NEAR columns)
+  int nmax_near;
+  double **nearest;
+  int comm_nearest;    // 1 while reverse comm carries nearest (else the wall load)
+  void find_touching(double);
+  template <int EVFLAG> void triangle_contacts();
+  void check_crossing();
 
   void allocate();
   void near_pairs(double);

@@ -1,0 +1,165 @@
+/* ----------------------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   CellWallTriangles: the wall triangles kept by their middle angle atoms (cell_wall_triangles.h)
+------------------------------------------------------------------------- */
+
+#include "cell_wall_triangles.h"
+
+#include "atom.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+CellWallTriangles::CellWallTriangles(LAMMPS *lmp, const std::string &style,
+                                     const std::string &range) :
+    Pointers(lmp),
+    style(style), range(range), nmax(0), tricount(nullptr), trifirst(nullptr), edgemax(0.0),
+    edgecap(0.0)
+{
+}
+
+/* ---------------------------------------------------------------------- */
+
+CellWallTriangles::~CellWallTriangles()
+{
+  memory->destroy(tricount);
+  memory->destroy(trifirst);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellWallTriangles::grow(int n)
+{
+  if (n <= nmax) return;
+  nmax = n;
+  memory->destroy(tricount);
+  memory->destroy(trifirst);
+  memory->create(tricount, nmax, "cell/wall/triangles:tricount");
+  memory->create(trifirst, nmax, "cell/wall/triangles:trifirst");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellWallTriangles::start_run()
+{
+  edgecap = 1.5 * longest_edge() + neighbor->skin;
+}
+
+/* ----------------------------------------------------------------------
+   longest edge b-a, b-c of the wall triangles now, over the angles of owned atoms whose other
+   atoms this rank has (all at the start; enough to measure the wall)
+------------------------------------------------------------------------- */
+
+double CellWallTriangles::longest_edge() const
+{
+  double **x = atom->x;
+  double edge = 0.0, all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < atom->num_angle[i]; m++)
+      for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
+        const int k = atom->map(tag);
+        if (k < 0 || atom->angle_atom2[i][m] != atom->tag[i]) continue;
+        double del[3] = {x[k][0] - x[i][0], x[k][1] - x[i][1], x[k][2] - x[i][2]};
+        domain->minimum_image(del);
+        edge = std::max(edge, del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+      }
+  MPI_Allreduce(&edge, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return sqrt(all);
+}
+
+/* ----------------------------------------------------------------------
+   the triangles each owned wall atom keeps (it is the middle atom b of the angle a b c), as local
+   indices of a and c, each the image closest to b; ghosts get theirs in unpack()
+------------------------------------------------------------------------- */
+
+void CellWallTriangles::build()
+{
+  double **x = atom->x;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  double edge = 0.0;
+  trivert.clear();
+  tritag.clear();
+  for (int i = 0; i < nlocal; i++) {
+    tricount[i] = 0;
+    trifirst[i] = static_cast<int>(trivert.size()) / 2;
+    for (int m = 0; m < atom->num_angle[i]; m++) {
+      if (atom->angle_atom2[i][m] != atom->tag[i]) continue;
+      if (tricount[i] == MAXTRI)
+        error->one(FLERR,
+                   "{}: wall atom {} is the middle atom of more than {} wall triangles (angles), "
+                   "the most one wall atom may keep",
+                   style, atom->tag[i], MAXTRI);
+      for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
+        const int k = atom->map(tag);
+        const int v = k < 0 ? -1 : domain->closest_image(i, k);
+        if (v >= 0) {
+          const double del[3] = {x[v][0] - x[i][0], x[v][1] - x[i][1], x[v][2] - x[i][2]};
+          edge = std::max(edge, del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+        }
+        trivert.push_back(v);
+        tritag.push_back(tag);
+      }
+      tricount[i]++;
+    }
+  }
+  // longest edge b-a, b-c until the next reneighbouring: now + the skin (each end moves < skin/2)
+  edge = sqrt(edge);
+  MPI_Allreduce(&edge, &edgemax, 1, MPI_DOUBLE, MPI_MAX, world);
+  edgemax += neighbor->skin;
+  if (edgemax > edgecap)
+    error->all(FLERR,
+               "{}: a wall edge grew to {:.4g} m on step {}, beyond the {:.4g} m {} allows in "
+               "this run (1.5 x the longest edge at the run's start): split the run (each run "
+               "command measures the wall again)",
+               style, edgemax - neighbor->skin, update->ntimestep, edgecap - neighbor->skin, range);
+  for (int i = nlocal; i < nall; i++) tricount[i] = 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int CellWallTriangles::pack(int n, const int *list, double *buf) const
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = list[k];
+    buf[m++] = tricount[i];
+    for (int v = 2 * trifirst[i]; v < 2 * (trifirst[i] + tricount[i]); v++)
+      buf[m++] = ubuf(tritag[v]).d;
+  }
+  return m;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellWallTriangles::unpack(int n, int first, const double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    tricount[i] = static_cast<int>(buf[m++]);
+    trifirst[i] = static_cast<int>(trivert.size()) / 2;
+    for (int v = 0; v < 2 * tricount[i]; v++) {
+      const tagint tag = static_cast<tagint>(ubuf(buf[m++]).i);
+      const int k = atom->map(tag);
+      trivert.push_back(k < 0 ? -1 : domain->closest_image(i, k));
+      tritag.push_back(tag);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double CellWallTriangles::memory_usage() const
+{
+  return 2.0 * nmax * sizeof(int) + trivert.capacity() * sizeof(int) +
+      tritag.capacity() * sizeof(tagint);
+}
