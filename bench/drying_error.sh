@@ -14,7 +14,8 @@
 # Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying_cell/cell.lmp), 1092 the
 # seed (1624 asked for, 1647 placed); any other NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
-# dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
+# dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake and 2000 sealed steps x 1e-8 s / dt; the
+# example itself runs dt = 2e-8 s: the point "1092 0.06 2").
 # XS="0.5 0.2" (default) are the X/X0 of the table. Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
 # the cores (note it with the table); the CPU time (user + system, /usr/bin/time) is the cost. The
 # last column is the drying alone, turgid to the end (LAMMPS's loop times after the turgid stage).
@@ -53,7 +54,7 @@ for p in "${points[@]}"; do
     t0=$SECONDS
     /usr/bin/time -f "%U %S" -o "cpu_$tag.txt" "${lmp[@]}" -in "$here/../examples/drying/in.drying" \
       -var data "c$nw.data" -var tag "$tag" -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" \
-      -var nup "$nup" "${skinvar[@]}" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
+      -var nup "$nup" -var nrest "$((nup / 6))" "${skinvar[@]}" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
       echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
     echo "$((SECONDS - t0)) / $(awk '{printf "%.0f", $1 + $2}' "cpu_$tag.txt")" >"wall_$tag.txt"
   fi
