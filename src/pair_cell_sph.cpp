@@ -42,9 +42,11 @@ static const double TREF_DEFAULT = 298.15;
 static const char *const EOS_NAMES[] = {"linear", "tait"};
 static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
 // per-atom h: the neighbour cutoff allows h up to grow x the largest h at the run's start (run_hcap;
-// unless a cutoff is given), and the wall boundary a wall edge up to grow x the longest at the
-// start; pair_style keyword grow, by default GROW
+// unless a cutoff is given); pair_style keyword grow, by default GROW
 static const double GROW = 1.5;
+// wall boundary: the neighbour range allows a wall edge to grow up to EDGEGROW x the longest at the
+// run's start (a folding wall stretches edges by more than h grows)
+static const double EDGEGROW = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-10;
 static const int HITER = 50;
@@ -1162,10 +1164,9 @@ void PairCellSPH::wall_triangles()
   if (edgemax > edgecap)
     error->all(FLERR,
                "Pair cell/sph: a wall edge grew to {:.4g} m on step {}, beyond the {:.4g} m the "
-               "wall boundary's neighbour range allows in this run (grow {} x the longest edge at "
-               "the run's start): split the run (each run command measures the wall again) or give "
-               "pair_style cell/sph a larger grow",
-               edgemax - neighbor->skin, update->ntimestep, edgecap - neighbor->skin, grow);
+               "wall boundary's neighbour range allows in this run ({} x the longest edge at the "
+               "run's start): split the run (each run command measures the wall again)",
+               edgemax - neighbor->skin, update->ntimestep, edgecap - neighbor->skin, EDGEGROW);
   for (int i = nlocal; i < nall; i++) tricount[i] = 0;
   commode = COMM_TRIANGLES;
   CellCompat::forward_comm(comm, this);
@@ -1729,7 +1730,7 @@ void PairCellSPH::init_style()
                      neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
     tabulate_phi();
     comm_forward = std::max(3, 1 + 2 * MAXTRI);
-    edgecap = grow * longest_edge() + neighbor->skin;
+    edgecap = EDGEGROW * longest_edge() + neighbor->skin;
   }
   writedata = all_set ? 1 : 0;
   if (viscous && !comm->ghost_velocity)
