@@ -6,7 +6,8 @@
 # step) against a reference run (the first point: finer or less accelerated), and the wall-clock
 # of each run. Prints a table. Points: "NWALL TSTEP" pairs, TSTEP = physical time per step (s) =
 # accel x dt, optionally followed by a time-step factor DTF (dt = DTF x the scaled dt below, uptake
-# steps / DTF, accel = TSTEP / dt: the same physical time per step in fewer, longer steps) and a
+# steps and output interval / DTF, accel = TSTEP / dt: the same physical time per step in fewer,
+# longer steps) and a
 # neighbour skin SKIN (in h; default the scene's 0.16; another skin changes only the round-off, so
 # "1092 0.015 1 0.25" beside the reference gives the noise floor of the comparison). The first point
 # is the reference. Default:
@@ -54,7 +55,7 @@ for p in "${points[@]}"; do
     t0=$SECONDS
     /usr/bin/time -f "%U %S" -o "cpu_$tag.txt" "${lmp[@]}" -in "$here/../examples/drying/in.drying" \
       -var data "c$nw.data" -var tag "$tag" -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" \
-      -var nup "$nup" -var nrest "$((nup / 6))" "${skinvar[@]}" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
+      -var nup "$nup" -var nrest "$((nup / 6))" -var nout "$(python3 -c "print(round(500 / $dtf))")" "${skinvar[@]}" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
       echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
     echo "$((SECONDS - t0)) / $(awk '{printf "%.0f", $1 + $2}' "cpu_$tag.txt")" >"wall_$tag.txt"
   fi
