@@ -84,7 +84,7 @@ for t in 333.15 343.15; do
     [ -s "cpu_$tag.txt" ] && continue
     /usr/bin/time -f "%U %S" -o "cpu_$tag.txt" "${lmp[@]}" -in "$here/../examples/drying/in.drying" \
       -var data c312.data -var tag "$tag" -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" \
-      -var nup "$nup" -var nout 100 -var maxout "$maxout" -var T "$t" -var cooling "$c" \
+      -var nup "$nup" -var nrest "$((nup / 6))" -var nout 100 -var maxout "$maxout" -var T "$t" -var cooling "$c" \
       -log "log.$tag" >"$tag.screen" || echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
   done
 done

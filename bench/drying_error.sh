@@ -5,12 +5,18 @@
 # and the wrinkling at X/X0 = 0.5 and 0.2 of cheaper runs (coarser wall, more physical time per
 # step) against a reference run (the first point: finer or less accelerated), and the wall-clock
 # of each run. Prints a table. Points: "NWALL TSTEP" pairs, TSTEP = physical time per step (s) =
-# accel x dt; the first is the reference. Default:
+# accel x dt, optionally followed by a time-step factor DTF (dt = DTF x the scaled dt below, uptake
+# steps and output interval / DTF, accel = TSTEP / dt: the same physical time per step in fewer,
+# longer steps) and a
+# neighbour skin SKIN (in h; default the scene's 0.16; another skin changes only the round-off, so
+# "1092 0.015 1 0.25" beside the reference gives the noise floor of the comparison). The first point
+# is the reference. Default:
 #   bench/drying_error.sh "1092 0.015" "1092 0.03" "642 0.03" "312 0.015" "312 0.03" "312 0.06"
 # Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying_cell/cell.lmp), 1092 the
 # seed (1624 asked for, 1647 placed); any other NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
-# dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake steps x 1e-8 s / dt).
+# dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake and 2000 sealed steps x 1e-8 s / dt; the
+# example itself runs dt = 2e-8 s: the point "1092 0.06 2").
 # XS="0.5 0.2" (default) are the X/X0 of the table. Each run is one LAMMPS run on NP ranks (default 2); the wall-clock depends on what else runs on
 # the cores (note it with the table); the CPU time (user + system, /usr/bin/time) is the cost. The
 # last column is the drying alone, turgid to the end (LAMMPS's loop times after the turgid stage).
@@ -31,7 +37,9 @@ points=("$@")
 cd "$work"
 for p in "${points[@]}"; do
   set -- $p
-  nw=$1 tstep=$2 tag="n$1_t$2"
+  nw=$1 tstep=$2 dtf=${3:-1} skin=${4:-} tag="n$1_t$2"
+  [ "$dtf" = 1 ] || tag+="_d$dtf"
+  [ -z "$skin" ] || tag+="_s$skin"
   case $nw in
     312) nf=450 ;;
     1092) nf=1624 ;;    # the seed: cellgen's default (1091 asked for gives 1092)
@@ -40,12 +48,14 @@ for p in "${points[@]}"; do
   "$build/tools/cellgen/cellgen" --nwall "$nw" --nfluid "$nf" --wall-mass 1e-12 --dihedrals --out "c$nw.data" >"cellgen$nw.log"
   # h and dt follow the fluid spacing, the contact size the wall spacing (the seed's: 1647 fluid
   # atoms, mean wall bond 8.62822 um)
-  read -r h dt ws nup acc < <(python3 "$here/cell_scale.py" "cellgen$nw.log" "$tstep")
+  read -r h dt ws nup acc < <(python3 "$here/cell_scale.py" "cellgen$nw.log" "$tstep" "$dtf")
+  skinvar=()
+  [ -z "$skin" ] || skinvar=(-var skin "$skin")
   if [ ! -s "final_$tag.txt" ]; then
     t0=$SECONDS
     /usr/bin/time -f "%U %S" -o "cpu_$tag.txt" "${lmp[@]}" -in "$here/../examples/drying/in.drying" \
       -var data "c$nw.data" -var tag "$tag" -var accel "$acc" -var h "$h" -var dt "$dt" -var ws "$ws" \
-      -var nup "$nup" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
+      -var nup "$nup" -var nrest "$((nup / 6))" -var nout "$(python3 -c "print(round(500 / $dtf))")" "${skinvar[@]}" "${extra[@]}" -log "log.$tag" >"$tag.screen" ||
       echo "run $tag failed: $(grep -m1 ERROR "log.$tag")"
     echo "$((SECONDS - t0)) / $(awk '{printf "%.0f", $1 + $2}' "cpu_$tag.txt")" >"wall_$tag.txt"
   fi
@@ -76,7 +86,8 @@ def planes(rs, x, key):
         return float("nan"), float("nan")
     return statistics.mean(v), statistics.pstdev(v)
 pts = [p.split() for p in sys.argv[1:]]
-tags = [f"n{n}_t{t}" for n, t in pts]
+tags = [f"n{p[0]}_t{p[1]}" + (f"_d{p[2]}" if len(p) > 2 and p[2] != "1" else "") +
+        (f"_s{p[3]}" if len(p) > 3 else "") for p in pts]
 data = {t: rows(t) for t in tags}
 ref = tags[0]
 print(f"reference: {pts[0][0]} wall particles, {pts[0][1]} s of physical time per step; values at "
@@ -89,9 +100,14 @@ def drying_loop(tag):
     with open(f"log.{tag}") as f:
         txt = f.read()
     return sum(float(m) for m in re.findall(r"Loop time of ([0-9.e+-]+)", txt[txt.find("turgid cell:"):]))
-print("| wall | s/step | " + " | ".join(head) + " | max err | wall-clock / CPU (s) | drying alone (s) |")
-print("|---" * (2 + len(head) + 3) + "|")
-for (n, ts), t in zip(pts, tags):
+print("| wall | s/step | dt (s) | skin (h) | " + " | ".join(head) +
+      " | max err | wall-clock / CPU (s) | drying alone (s) |")
+print("|---" * (4 + len(head) + 3) + "|")
+for p, t in zip(pts, tags):
+    n, ts = p[0], p[1]
+    with open(f"dry_{t}.dat") as f:
+        dtrun = re.search(r"dt ([^,]+),", f.readline()).group(1)
+    skin = p[3] if len(p) > 3 else "0.16"
     vals, errs = [], []
     for x in XS:
         for k in ("A", "P", "F", "V", "wrink"):
@@ -108,6 +124,6 @@ for (n, ts), t in zip(pts, tags):
     with open(f"wall_{t}.txt") as f:
         wc = f.read().strip()
     err = f"{max(errs):.1%}" if errs else "(ref)"
-    print(f"| {n} | {ts} | " + " | ".join(vals) + f" | {err} | {wc} | {drying_loop(t):.0f} |")
+    print(f"| {n} | {ts} | {dtrun} | {skin} | " + " | ".join(vals) + f" | {err} | {wc} | {drying_loop(t):.0f} |")
 PY
 echo "runs in $work"

@@ -54,6 +54,42 @@ static double winding_number(const double *tri, int ntri, const double *p)
   return sum / (2.0 * MY_PI);
 }
 
+// the same winding number by the triangles that the ray from p along +z crosses: w = sum of
+// sign(n_z) over them (doc/compute_cell_props.md, leak count). A ray within round-off of an edge or
+// a vertex, or p within round-off of a triangle it crosses, has no clean count: then the solid
+// angles decide
+static double ray_winding_number(const double *tri, int ntri, const double *p)
+{
+  static const double TINY = 1e-9;
+  int w = 0;
+  const double *t = tri;
+  for (int k = 0; k < ntri; k++, t += 9) {
+    const double ax = t[0] - p[0], ay = t[1] - p[1];
+    const double bx = t[3] - p[0], by = t[4] - p[1];
+    const double cx = t[6] - p[0], cy = t[7] - p[1];
+    if ((ax > 0.0 && bx > 0.0 && cx > 0.0) || (ax < 0.0 && bx < 0.0 && cx < 0.0) ||
+        (ay > 0.0 && by > 0.0 && cy > 0.0) || (ay < 0.0 && by < 0.0 && cy < 0.0))
+      continue;
+    // edge functions of the projection on z = 0 about the ray: twice the areas of p b c, p c a,
+    // p a b, whose sum is twice the projected area, signed as n_z
+    const double ea = bx * cy - by * cx, eb = cx * ay - cy * ax, ec = ax * by - ay * bx;
+    const double area = ea + eb + ec;
+    const double tol = TINY * (fabs(ea) + fabs(eb) + fabs(ec));
+    if (fabs(ea) <= tol || fabs(eb) <= tol || fabs(ec) <= tol) {
+      if (fabs(area) <= tol) continue;    // a triangle seen edge-on from the ray: not crossed
+      return winding_number(tri, ntri, p);
+    }
+    if ((ea > 0.0) != (area > 0.0) || (eb > 0.0) != (area > 0.0) || (ec > 0.0) != (area > 0.0))
+      continue;
+    // height of the crossing above p: barycentric (ea, eb, ec) / area of the corners' z
+    const double az = t[2] - p[2], bz = t[5] - p[2], cz = t[8] - p[2];
+    const double z = (ea * az + eb * bz + ec * cz) / area;
+    if (fabs(z) <= TINY * (fabs(az) + fabs(bz) + fabs(cz))) return winding_number(tri, ntri, p);
+    if (z > 0.0) w += area > 0.0 ? 1 : -1;
+  }
+  return w;
+}
+
 /* ---------------------------------------------------------------------- */
 
 ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
@@ -304,6 +340,6 @@ bool ComputeCellProps::is_outside(int h, const double *x) const
   if (r2 < o[4])
     w = o[5];
   else if (r2 <= o[3])
-    w = winding_number(walls->xyz(h), walls->ntri(h), x);
+    w = ray_winding_number(walls->xyz(h), walls->ntri(h), x);
   return w < 0.5;
 }

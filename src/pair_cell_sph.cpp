@@ -37,14 +37,14 @@ using namespace LAMMPS_NS;
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
 // wall boundary's adhesion W per type pair
-static const int RESTART_VERSION = 7;
+static const int RESTART_VERSION = 8;
 static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
 static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
-// per-atom h: the neighbour cutoff allows h up to HCAP x the largest h at the run's start (run_h;
-// unless a cutoff is given)
-static const double HCAP = 1.5;
+// per-atom h: the neighbour cutoff allows h up to grow x the largest h at the run's start (run_hcap;
+// unless a cutoff is given); pair_style keyword grow, by default GROW
+static const double GROW = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-10;
 static const int HITER = 50;
@@ -422,10 +422,11 @@ void PairCellSPH::too_long(int i) const
   error->one(FLERR,
              "Pair cell/sph: atom {} (cell {}) needs h = {:.4g} m = {:.3g} x the h of pair_coeff "
              "{} {} on step {}, beyond the {:.4g} m ({:.3g} x) that the neighbour cutoff allows: "
-             "give pair_style cell/sph a cutoff of at least {:.4g} m ({} h)",
+             "split the run (each run measures h again), give pair_style cell/sph a grow larger "
+             "than {} or a cutoff of at least {:.4g} m ({} h)",
              atom->tag[i], atom->molecule ? atom->molecule[i] : 0, hi, hi / h[t][t], t, t,
-             update->ntimestep, hcap[t], hcap[t] / h[t][t], 1.1 * hi * CellKernel::support(kernel),
-             CellKernel::support(kernel));
+             update->ntimestep, hcap[t], hcap[t] / h[t][t], grow,
+             1.1 * hi * CellKernel::support(kernel), CellKernel::support(kernel));
 }
 
 /* ----------------------------------------------------------------------
@@ -847,8 +848,8 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
    at reneighbouring: the neighbour list split into the fluid pairs of the SPH sums and the
    fluid-wall pairs of the wall boundary (same cell), so that the steps between exact evaluations
    of the boundary do not visit the boundary pairs. With per-atom h the fluid pairs are only those
-   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches HCAP x
-   the largest h of the run's start, most of it beyond every support once a cell has dried
+   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches grow x
+   the largest h of the run's start (grow), most of it beyond every support once a cell has dried
    (margin = skin at a build; 2 skin on a later split, since both atoms may have moved skin/2 from
    the build positions before and move as much again after). Dropped pairs would be skipped by
    the density pass anyway, so the sums are the same.
@@ -1354,7 +1355,7 @@ void PairCellSPH::allocate()
 /* ----------------------------------------------------------------------
    pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [eos linear|tait]
                        [h fixed|mass <eta>|adaptive <eta>] [temp <T>] [Tref <T0>]
-                       [shift <A>] [tensile <eps> [n <n>] [dp <length>]]
+                       [shift <A>] [tensile <eps> [n <n>] [dp <length>]] [grow <g>]
 ------------------------------------------------------------------------- */
 
 // the range of the Vogel correlation of the viscosity of water
@@ -1379,6 +1380,7 @@ void PairCellSPH::settings(int narg, char **arg)
   tensile = 0.0;
   tensile_n = 4;
   tensile_dp = 0.0;
+  grow = GROW;
   // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
   // (h mode, tensile)
   maxpairs = 0;
@@ -1456,6 +1458,9 @@ void PairCellSPH::settings(int narg, char **arg)
         }
         iarg += 2;
       }
+    } else if (strcmp(arg[iarg], "grow") == 0) {
+      grow = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(grow > 1.0)) error->all(FLERR, "Pair style cell/sph: grow = {} must be > 1", grow);
     } else if (strcmp(arg[iarg], "kernel") == 0) {
       kernel = CellKernel::parse(value);
       if (kernel < 0)
@@ -1473,7 +1478,7 @@ void PairCellSPH::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos', "
-                 "'h', 'temp', 'Tref', 'shift' or 'tensile')",
+                 "'h', 'temp', 'Tref', 'shift', 'tensile' or 'grow')",
                  arg[iarg]);
     }
     iarg += 2;
@@ -1615,7 +1620,7 @@ void PairCellSPH::init_style()
   }
   // per-atom h: the largest h of each fluid type that the neighbour cutoff allows
   for (int i = 1; i <= n; i++)
-    hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : HCAP * run_h(i);
+    hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : run_hcap(i);
   walls = has_wall_boundary() ? 1 : 0;
   adhering = 0;
   for (int i = 1; i <= n; i++) {
@@ -1673,12 +1678,13 @@ void PairCellSPH::init_style()
 }
 
 /* ----------------------------------------------------------------------
-   the h of fluid type t at the start of a run, from which the default cutoff allows HCAP x:
-   the largest per-atom h of the type over all ranks (h mass|adaptive, atoms that have one),
-   else the pair_coeff h; so the neighbour list follows a cell that dries or takes up water
+   the largest h of fluid type t that the default cutoff allows in this run: grow x the largest
+   per-atom h of the type over all ranks (h mass|adaptive, atoms that have one), so that the
+   neighbour list follows a cell that dries or takes up water; from the pair_coeff h, before any
+   atom has one, at least GROW x (the first h may differ from it by more than one run's growth)
 ------------------------------------------------------------------------- */
 
-double PairCellSPH::run_h(int t) const
+double PairCellSPH::run_hcap(int t) const
 {
   double hmax = 0.0, all = 0.0;
   if (hmode != HFIXED) {
@@ -1687,7 +1693,7 @@ double PairCellSPH::run_h(int t) const
       if (atom->type[i] == t) hmax = std::max(hmax, hv[i]);
   }
   MPI_Allreduce(&hmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return all > 0.0 ? all : h[t][t];
+  return all > 0.0 ? grow * all : std::max(grow, GROW) * h[t][t];
 }
 
 /* ----------------------------------------------------------------------
@@ -1870,6 +1876,8 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&tensile, sizeof(double), 1, fp);
   fwrite(&tensile_n, sizeof(int), 1, fp);
   fwrite(&tensile_dp, sizeof(double), 1, fp);
+  // version 8: grow
+  fwrite(&grow, sizeof(double), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1918,6 +1926,10 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &tensile_n, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &tensile_dp, sizeof(double), 1, fp, nullptr, error);
   }
+  // grow from version 8 on; older files had the default
+  grow = GROW;
+  if (comm->me == 0 && restart_version >= 8)
+    utils::sfread(FLERR, &grow, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -1932,6 +1944,7 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&tensile, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&tensile_n, 1, MPI_INT, 0, world);
   MPI_Bcast(&tensile_dp, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&grow, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);

@@ -6,9 +6,9 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 or 7 in
+  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 8 in
                                                the layout of version 5 (no tensile eps, n, dp; no
-                                               wall adhesion W per type pair)
+                                               wall adhesion W per type pair; no grow)
 
 STYLE is cell/sph, cell/wall, cell/neohookean, cell/lamella, cell/turgor or cell/bending
 (unversioned: not cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/lamella or
@@ -83,11 +83,11 @@ def sph_to_version5(data, at, version):
     payload whose marker is at offset at: after the marker, kernel eos (int), cutoff (double),
     hmode (int), eta (double), temp flag (int), T, Tref (double), name length (int), name, shift
     (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
-    setflag, boundary (int) and rho0, K, mu, h (double)."""
+    setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp."""
     (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
-    del data[start:start + 8 + 4 + 8]
-    if version == 7:
+    del data[start:start + 8 + 4 + 8 + (8 if version >= 8 else 0)]
+    if version >= 7:
         n = atom_types(data)
         pos = start
         for _ in range(n * (n + 1) // 2):
@@ -114,8 +114,8 @@ def main():
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
-            if version not in (6, 7):
-                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 or 7")
+            if version not in (6, 7, 8):
+                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 8")
             sph_to_version5(data, at, version)
             print(f"restart_version.py: {style} payload version {version} -> 5")
         elif mode == "older":

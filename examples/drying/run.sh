@@ -37,7 +37,7 @@ shape=()
 [ -z "$elong" ] || shape=(--elongation "$elong")
 if [ "$res" = coarse ]; then
   "$build/tools/cellgen/cellgen" --nwall 312 --nfluid 450 --wall-mass 1e-12 --dihedrals "${shape[@]}" --out cell.data >cellgen.log
-  scale=(-var h 18.18e-6 -var dt 1.5e-8 -var ws 1.871 -var nup 6000)
+  scale=(-var h 18.18e-6 -var dt 3e-8 -var ws 1.871 -var nup 3000)
   runs=("T70 343.15 2e6" "T40 313.15 8e6")
 else
   "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --dihedrals "${shape[@]}" --out cell.data >cellgen.log
@@ -46,8 +46,8 @@ else
 fi
 
 # 70 C and 40 C, RH 0.15, h_m = 2 cm/s on 1 % of the wall; accel chosen so that both dry to 0.2 in
-# about the same number of steps (0.03 s of physical time per step at 70 C; the air at 40 C
-# carries 3.9 x less vapour)
+# about the same number of steps (0.06 s of physical time per step at 70 C, dt = 2e-8 s; the air at
+# 40 C carries 3.9 x less vapour)
 for run in "${runs[@]}"; do
   set -- $run
   t0=$(date +%s)
