@@ -101,7 +101,7 @@ class PairCellSPH : public Pair {
   // per-atom h (h mass, h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
   // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
   int ih, iomega;
-  double grow;                 // pair_style grow: h and wall edges may grow grow x in one run
+  double grow;                 // pair_style grow: h may grow grow x in one run (default cutoff)
   double *hcap;                // largest h the neighbour cutoff allows, per fluid type
   double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
   double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
