@@ -29,8 +29,10 @@
 #include "variable.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -1623,11 +1625,7 @@ void PairCellSPH::init_style()
     hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : run_hcap(i);
   walls = has_wall_boundary() ? 1 : 0;
   adhering = 0;
-  for (int i = 1; i <= n; i++) {
-    adhk[i] = 0.0;    // set by init_one of the boundary pairs
-    for (int j = i; j <= n; j++)
-      if (setflag[i][j] && boundary[i][j] && adhesion[i][j] > 0.0) adhering = 1;
-  }
+  for (int i = 1; i <= n; i++) adhk[i] = 0.0;    // set by wetting()
   if (walls) {
     if (domain->dimension != 3)
       error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
@@ -1654,6 +1652,7 @@ void PairCellSPH::init_style()
                      "2022 is delay 10): atoms may move past the skin between builds",
                      neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
     tabulate_phi();
+    wetting();
     comm_forward = std::max(3, CellWallTriangles::COMM_SIZE);
     tris->start_run();
   }
@@ -1675,6 +1674,36 @@ void PairCellSPH::init_style()
                first);
 
   CellCompat::request_list(neighbor, this, instance_me, CellCompat::REQ_DEFAULT);
+}
+
+/* ----------------------------------------------------------------------
+   the adhesion of each fluid type from its wall boundary pairs, whatever the order of their
+   pair_coeff lines: one W per fluid type
+------------------------------------------------------------------------- */
+
+void PairCellSPH::wetting()
+{
+  const int n = atom->ntypes;
+  std::vector<double> w(n + 1, -1.0);
+  std::vector<std::array<int, 2>> from(n + 1, {0, 0});    // the pair that set w[f]
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j] || !boundary[i][j]) continue;
+      const int f = setflag[i][i] ? i : j;
+      if (!setflag[f][f]) continue;    // init_one stops on such a pair
+      if (w[f] >= 0.0 && w[f] != adhesion[i][j])
+        error->all(FLERR,
+                   "Pair cell/sph: fluid type {} has wall boundaries with two adhesions W = {} "
+                   "(pair_coeff {} {}) and W = {} (pair_coeff {} {}): give each fluid type one W",
+                   f, w[f], from[f][0], from[f][1], adhesion[i][j], i, j);
+      w[f] = adhesion[i][j];
+      from[f] = {i, j};
+    }
+  for (int f = 1; f <= n; f++) {
+    // a_f = adhk m_f / h_f with adhk = W / (rho0 c_k) (doc/pair_cell_sph.md, eq. A2)
+    if (w[f] > 0.0) adhk[f] = w[f] / (rho0[f][f] * planeint);
+    if (adhk[f] > 0.0) adhering = 1;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -1719,15 +1748,6 @@ double PairCellSPH::init_one(int i, int j)
     // the neighbour range reaches every triangle whose centroid is inside the kernel support:
     // the centroid is within 2/3 of the longest edge of the triangle's keeper
     const double range = support + 2.0 / 3.0 * (tris->edge_cap() - neighbor->skin);
-    // adhesion: a_f = adhk m_f / h_f with adhk = W / (rho0 c_k) (doc/pair_cell_sph.md, eq. A2)
-    const double k = adhesion[i][j] / (rho0[f][f] * planeint);
-    if (adhk[f] != 0.0 && adhk[f] != k)
-      error->all(
-          FLERR,
-          "Pair cell/sph: fluid type {} has wall boundaries with two adhesions W (pair_coeff "
-          "{} {} wall adhesion {}): give each fluid type one W",
-          f, i, j, adhesion[i][j]);
-    adhk[f] = k;
     pc[i][j] = PairConst{range * range, CellKernel::scale(kernel, 3, h[f][f]),
                          0.0,           1,
                          reach,         bulk[f][f] * reach * reach};

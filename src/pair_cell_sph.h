@@ -195,6 +195,7 @@ class PairCellSPH : public Pair {
   void linear_deficit();
   void contact(int, int, int, int);
   void tabulate_phi();
+  void wetting();
   void phi_beyond(double q, double &value, double &slope) const;
   void apply_eos();
   void grow_pairs(int);
