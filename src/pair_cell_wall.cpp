@@ -4,7 +4,8 @@
    particle (repulsion F^rw = -F^rf, adhesion F^a) and between non-bonded wall particles (contact).
    Each term is switched on per type pair; a per-pair bitmask keeps off terms out of the loop.
    With triangles, a wall atom also meets the triangles of the other cells' walls (the distance to
-   each triangle's closest point), and a wall atom found behind another cell's face stops the run.
+   each triangle's closest point), and a wall atom found behind another cell's face stops the run;
+   selftriangles does the same with its own wall's triangles that it is not a vertex of.
    Bonded wall pairs of one cell are excluded through special_bonds (factor_lj; a bonded pair of two
    cells, a junction, keeps weight 1), fluid-fluid pairs belong to
    pair_style cell/sph (under hybrid/overlay).
@@ -19,6 +20,7 @@
 #include "cell_triangle.h"
 #include "cell_wall_triangles.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "math_special.h"
@@ -35,24 +37,26 @@ using namespace LAMMPS_NS;
 using MathSpecial::cube;
 using MathSpecial::powint;
 
-static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact", "triangles"};
-static const int TERM_VALUES[] = {2, 4, 2, 2};    // required numbers after each keyword
-static constexpr int NTERMS = 4;
-// f0 r0 p1 p2 D alpha ra rc eps sigma smooth (version 3) teps tsigma (version 4)
-static constexpr int NPARAM = 13;
+static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact", "triangles",
+                                         "selftriangles"};
+static const int TERM_VALUES[] = {2, 4, 2, 2, 2};    // required numbers after each keyword
+static constexpr int NTERMS = 5;
+// f0 r0 p1 p2 D alpha ra rc eps sigma smooth (version 3) teps tsigma (version 4) seps ssigma
+// (version 5)
+static constexpr int NPARAM = 15;
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
-// columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c
+// columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c; the
+// nearest of another cell's, then (from column NEAR) of the own wall's
 static constexpr int NEAR = 6;
 // 2: the settings begin with -version (1: none); 3: the adhesion's smooth flag after sigma;
-// 4: the triangles' eps and sigma after it
-static constexpr int RESTART_VERSION = 4;
+// 4: the triangles' eps and sigma after it; 5: the selftriangles' eps and sigma after those
+static constexpr int RESTART_VERSION = 5;
 
 static const char *const COEFF_USAGE =
     "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] "
-    "[contact eps sigma] [triangles eps sigma]', 'pair_coeff I J none' or 'pair_coeff I J file "
-    "<parameter file> "
-    "wallfluid|wallwall'";
+    "[contact eps sigma] [triangles eps sigma] [selftriangles eps sigma]', 'pair_coeff I J none' "
+    "or 'pair_coeff I J file <parameter file> wallfluid|wallwall'";
 
 /* ----------------------------------------------------------------------
    p/2 if p is an even integer, so that (r0/r)^p = powint((r0/r)^2, p/2); else 0
@@ -79,7 +83,7 @@ PairCellWall::PairCellWall(LAMMPS *lmp) :
     nmax_near(0), nearest(nullptr), comm_nearest(0)
 {
   writedata = 1;
-  comm_reverse = NEAR;
+  comm_reverse = 2 * NEAR;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -243,9 +247,12 @@ template <int LOAD> void PairCellWall::eval(int eflag)
 
 /* ----------------------------------------------------------------------
    at each neighbour build: every (wall atom, triangle of another cell) whose closest point is
-   within the triangles' reach + margin, from the list's pairs (wall atom, the triangle's keeper
-   b) of type pairs with the term; the rest cannot come within reach before the next build (the
-   distance moves by less than the displacements of the atom and of one vertex)
+   within the triangles' reach + margin, and with selftriangles every (wall atom, triangle of its
+   own wall that it is not a vertex of) within that term's reach + margin, from the list's pairs
+   (wall atom, the triangle's keeper b) of type pairs with the term and, for the own wall, from
+   the bonded partners (special list) whose pairs LAMMPS dropped from the list; the rest cannot
+   come within reach before the next build (the distance moves by less than the displacements of
+   the atom and of one vertex)
 ------------------------------------------------------------------------- */
 
 void PairCellWall::find_touching(double margin)
@@ -261,41 +268,73 @@ void PairCellWall::find_touching(double margin)
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const Coeff &c = coeffs[type[i]][type[j]];
-      if (!(c.terms & TRIANGLES) || molecule[i] == molecule[j]) continue;
+      const bool self = molecule[i] == molecule[j];
+      if (!(c.terms & (self ? SELFTRIANGLES : TRIANGLES))) continue;
       // a triangle within reach of x has its keeper within reach + its longest edge b-a, b-c
-      const double reach = c.treach + margin;
+      const double reach = (self ? c.sreach : c.treach) + margin;
       const double keep = reach + edge;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       if (delx * delx + dely * dely + delz * delz >= keep * keep) continue;
-      for (const int w : {i, j}) {
-        const int b = w == i ? j : i;
-        for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
-          const int a = tris->a(t), v = tris->c(t);
-          if (a < 0 || v < 0)
-            error->one(FLERR,
-                       "Pair cell/wall: a vertex of a wall triangle kept by atom {} (cell {}) "
-                       "is not on this rank on step {}, and the triangle may be within reach of "
-                       "wall atom {} (cell {}): raise the ghost cutoff (comm_modify cutoff, now "
-                       "{:.4g} m) to the triangles' reach + twice the longest wall edge",
-                       atom->tag[b], molecule[b], update->ntimestep, atom->tag[w], molecule[w],
-                       comm->get_comm_cutoff());
-          const CellTriangle::Foot ft = CellTriangle::closest(x[w], x[a], x[b], x[v]);
-          const double e[3] = {x[w][0] - ft.p[0], x[w][1] - ft.p[1], x[w][2] - ft.p[2]};
-          if (CellTriangle::dot(e, e) < reach * reach) touching.push_back({w, a, b, v});
-        }
-      }
+      touch_kept(i, j, reach, self);
+      touch_kept(j, i, reach, self);
+    }
+  }
+  // bonded partners of an owned atom whose class LAMMPS leaves out of the list (special_bonds lj
+  // and coul 0): their triangles without the atom are in its 2-ring (1-2) or beyond; each
+  // partner's triangles once, by the atom's owner (the special lists are symmetric)
+  if (!atom->molecular) return;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *nspecial = atom->nspecial[i];
+    for (int m = 0; m < nspecial[2]; m++) {
+      const int order = m < nspecial[0] ? 1 : m < nspecial[1] ? 2 : 3;
+      if (neighbor->special_flag[order] != 0) continue;
+      const int k = atom->map(atom->special[i][m]);
+      if (k < 0) continue;    // a missing bonded atom stops the bonded styles
+      const int j = domain->closest_image(i, k);
+      const Coeff &c = coeffs[type[i]][type[j]];
+      if (molecule[i] != molecule[j] || !(c.terms & SELFTRIANGLES)) continue;
+      touch_kept(i, j, c.sreach + margin, true);
     }
   }
 }
 
 /* ----------------------------------------------------------------------
-   the contact of each wall atom w with the triangles (a, b, c) of other cells it touches: WCA of
-   the distance d to the closest point p, E = 4 eps [(sigma/d)^12 - (sigma/d)^6] + eps for
-   d < 2^(1/6) sigma; F_w = -dE/dd (x_w - p)/d, and -lambda_v F_w on vertex v (lambda the
-   barycentric coordinates of p), so that F = -grad E and the forces sum to zero
-   (doc/pair_cell_wall.md, Triangles); each atom's nearest such triangle goes into nearest
+   the triangles kept by atom b within reach of wall atom w; of the own wall (self) only those w
+   is not a vertex of
+------------------------------------------------------------------------- */
+
+void PairCellWall::touch_kept(int w, int b, double reach, bool self)
+{
+  double **x = atom->x;
+  const tagint *tag = atom->tag;
+  for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
+    const int a = tris->a(t), v = tris->c(t);
+    if (a < 0 || v < 0)
+      error->one(FLERR,
+                 "Pair cell/wall: a vertex of a wall triangle kept by atom {} (cell {}) is not on "
+                 "this rank on step {}, and the triangle may be within reach of wall atom {} "
+                 "(cell {}): raise the ghost cutoff (comm_modify cutoff, now {:.4g} m) to the "
+                 "triangles' reach + twice the longest wall edge",
+                 tag[b], atom->molecule[b], update->ntimestep, tag[w], atom->molecule[w],
+                 comm->get_comm_cutoff());
+    // a triangle w is a vertex of is no contact (doc/pair_cell_wall.md, Selftriangles)
+    if (self && (tag[a] == tag[w] || tag[v] == tag[w])) continue;
+    const CellTriangle::Foot ft = CellTriangle::closest(x[w], x[a], x[b], x[v]);
+    const double e[3] = {x[w][0] - ft.p[0], x[w][1] - ft.p[1], x[w][2] - ft.p[2]};
+    if (CellTriangle::dot(e, e) < reach * reach) touching.push_back({w, a, b, v});
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the contact of each wall atom w with the triangles (a, b, c) it touches (of other cells, or of
+   its own wall and w not a vertex): WCA of the distance d to the closest point p,
+   E = 4 eps [(sigma/d)^12 - (sigma/d)^6] + eps for d < 2^(1/6) sigma; F_w = -dE/dd (x_w - p)/d,
+   and -lambda_v F_w on vertex v (lambda the barycentric coordinates of p), so that F = -grad E
+   and the forces sum to zero (doc/pair_cell_wall.md, Triangles); each atom's nearest such
+   triangle of another cell, and of its own wall, goes into nearest
 ------------------------------------------------------------------------- */
 
 template <int EVFLAG> void PairCellWall::triangle_contacts()
@@ -308,17 +347,22 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
   if (atom->nmax > nmax_near) {
     nmax_near = atom->nmax;
     memory->destroy(nearest);
-    memory->create(nearest, nmax_near, NEAR, "pair:nearest");
+    memory->create(nearest, nmax_near, 2 * NEAR, "pair:nearest");
   }
-  for (int i = 0; i < nall; i++) nearest[i][0] = -1.0;
+  for (int i = 0; i < nall; i++) nearest[i][0] = nearest[i][NEAR] = -1.0;
   for (const auto &t : touching) {
     const int w = t[0], a = t[1], b = t[2], c = t[3];
     const Coeff &k = coeffs[type[w]][type[b]];
+    const bool self = atom->molecule[w] == atom->molecule[b];
+    const double eps = self ? k.seps : k.teps;
+    const double sigsq = self ? k.ssigsq : k.tsigsq;
+    const double reach = self ? k.sreach : k.treach;
     const CellTriangle::Foot ft = CellTriangle::closest(x[w], x[a], x[b], x[c]);
     const double e[3] = {x[w][0] - ft.p[0], x[w][1] - ft.p[1], x[w][2] - ft.p[2]};
     const double dsq = CellTriangle::dot(e, e);
-    if (dsq >= k.treach * k.treach) continue;
-    if (nearest[w][0] < 0.0 || dsq < nearest[w][0]) {
+    if (dsq >= reach * reach) continue;
+    double *near = nearest[w] + (self ? NEAR : 0);
+    if (near[0] < 0.0 || dsq < near[0]) {
       // behind the face: in the face region and (x_w - p) . n <= 0, n = (b - a) x (c - a) outward
       // (on the face, d = 0, the wall atom has no side)
       double behind = dsq == 0.0 ? 1.0 : 0.0;
@@ -329,7 +373,6 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
         CellTriangle::cross(ab, ac, n);
         behind = CellTriangle::dot(n, e) <= 0.0 ? 1.0 : 0.0;
       }
-      double *near = nearest[w];
       near[0] = dsq;
       near[1] = behind;
       near[2] = ubuf(atom->molecule[b]).d;
@@ -338,9 +381,9 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
       near[5] = ubuf(tag[c]).d;
     }
     if (dsq == 0.0) continue;    // on the face: check_crossing() stops the run
-    const double s3 = cube(k.tsigsq / dsq);
+    const double s3 = cube(sigsq / dsq);
     // F_w = 24 eps [2 (sigma/d)^12 - (sigma/d)^6] (x_w - p) / d^2 (doc/pair_cell_wall.md, eq. T1)
-    const double fd = 24.0 * k.teps * s3 * (2.0 * s3 - 1.0) / dsq;
+    const double fd = 24.0 * eps * s3 * (2.0 * s3 - 1.0) / dsq;
     const double fw[3] = {fd * e[0], fd * e[1], fd * e[2]};
     double fv[3][3];
     const int v[3] = {a, b, c};
@@ -352,7 +395,7 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
     for (int d = 0; d < 3; d++) f[w][d] += fw[d];
     if (EVFLAG) {
       // E = 4 eps [(sigma/d)^12 - (sigma/d)^6] + eps, zero at the reach
-      const double energy = 4.0 * k.teps * s3 * (s3 - 1.0) + k.teps;
+      const double energy = 4.0 * eps * s3 * (s3 - 1.0) + eps;
       if (eflag_global) eng_vdwl += energy;
       if (eflag_atom) eatom[w] += energy;
       if (vflag_either) {
@@ -373,8 +416,9 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
 /* ----------------------------------------------------------------------
    the walls have crossed if a wall atom is behind the face of its nearest triangle of another
    cell within reach (a wall atom outside a cell thinner than the reach may be behind a far face,
-   but is nearer to the face in front of it); the nearest over all ranks' pairs by reverse comm,
-   only when some rank has an atom behind its nearest triangle
+   but is nearer to the face in front of it), and a wall has passed through itself if a wall atom
+   is behind the face of its nearest own triangle within reach that it is not a vertex of; the
+   nearest over all ranks' pairs by reverse comm, only when some rank has an atom behind one
 ------------------------------------------------------------------------- */
 
 void PairCellWall::check_crossing()
@@ -383,7 +427,8 @@ void PairCellWall::check_crossing()
   const int nall = nlocal + atom->nghost;
   int mine = 0, any = 0;
   for (int i = 0; i < nall && !mine; i++)
-    if (nearest[i][0] >= 0.0 && nearest[i][1] > 0.0) mine = 1;
+    for (int s = 0; s < 2 * NEAR; s += NEAR)
+      if (nearest[i][s] >= 0.0 && nearest[i][s + 1] > 0.0) mine = 1;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
   if (!any) return;
   comm_nearest = 1;
@@ -391,15 +436,24 @@ void PairCellWall::check_crossing()
   comm_nearest = 0;
   for (int i = 0; i < nlocal; i++) {
     const double *near = nearest[i];
-    if (near[0] < 0.0 || near[1] == 0.0) continue;
     const tagint cell = static_cast<tagint>(ubuf(near[2]).i);
-    error->one(FLERR,
-               "Pair cell/wall: walls of cells {} and {} crossed on step {}: wall atom {} (cell "
-               "{}) is {:.4g} m behind the face of triangle {} {} {} (cell {}), its nearest "
-               "triangle of another cell",
-               atom->molecule[i], cell, update->ntimestep, atom->tag[i], atom->molecule[i],
-               sqrt(near[0]), static_cast<tagint>(ubuf(near[3]).i),
-               static_cast<tagint>(ubuf(near[4]).i), static_cast<tagint>(ubuf(near[5]).i), cell);
+    if (near[0] >= 0.0 && near[1] > 0.0)
+      error->one(FLERR,
+                 "Pair cell/wall: walls of cells {} and {} crossed on step {}: wall atom {} (cell "
+                 "{}) is {:.4g} m behind the face of triangle {} {} {} (cell {}), its nearest "
+                 "triangle of another cell",
+                 atom->molecule[i], cell, update->ntimestep, atom->tag[i], atom->molecule[i],
+                 sqrt(near[0]), static_cast<tagint>(ubuf(near[3]).i),
+                 static_cast<tagint>(ubuf(near[4]).i), static_cast<tagint>(ubuf(near[5]).i), cell);
+    const double *own = near + NEAR;
+    if (own[0] >= 0.0 && own[1] > 0.0)
+      error->one(FLERR,
+                 "Pair cell/wall: the wall of cell {} passed through itself on step {}: wall atom "
+                 "{} is {:.4g} m behind the face of triangle {} {} {} of its own wall, its nearest "
+                 "own triangle that it is not a vertex of",
+                 atom->molecule[i], update->ntimestep, atom->tag[i], sqrt(own[0]),
+                 static_cast<tagint>(ubuf(own[3]).i), static_cast<tagint>(ubuf(own[4]).i),
+                 static_cast<tagint>(ubuf(own[5]).i));
   }
 }
 
@@ -442,7 +496,7 @@ int PairCellWall::pack_reverse_comm(int n, int first, double *buf)
   int m = 0;
   if (comm_nearest) {
     for (int i = first; i < first + n; i++)
-      for (int k = 0; k < NEAR; k++) buf[m++] = nearest[i][k];
+      for (int k = 0; k < 2 * NEAR; k++) buf[m++] = nearest[i][k];
     return m;
   }
   for (int i = first; i < first + n; i++) {
@@ -459,12 +513,13 @@ void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   if (comm_nearest) {
-    // the nearer of the two
-    for (int k = 0; k < n; k++, m += NEAR) {
-      double *near = nearest[list[k]];
-      if (buf[m] >= 0.0 && (near[0] < 0.0 || buf[m] < near[0]))
-        for (int c = 0; c < NEAR; c++) near[c] = buf[m + c];
-    }
+    // the nearer of the two, of other cells and of the own wall
+    for (int k = 0; k < n; k++)
+      for (int s = 0; s < 2 * NEAR; s += NEAR, m += NEAR) {
+        double *near = nearest[list[k]] + s;
+        if (buf[m] >= 0.0 && (near[0] < 0.0 || buf[m] < near[0]))
+          for (int c = 0; c < NEAR; c++) near[c] = buf[m + c];
+      }
     return;
   }
   for (int k = 0; k < n; k++) {
@@ -480,7 +535,7 @@ void PairCellWall::unpack_reverse_comm(int n, int *list, double *buf)
 double PairCellWall::memory_usage()
 {
   return Pair::memory_usage() + 3.0 * nmax_load * sizeof(double) +
-      NEAR * nmax_near * sizeof(double) + tris->memory_usage() +
+      2 * NEAR * nmax_near * sizeof(double) + tris->memory_usage() +
       touching.capacity() * sizeof(touching[0]);
 }
 
@@ -561,6 +616,7 @@ void PairCellWall::settings(int narg, char **arg)
 
 /* ----------------------------------------------------------------------
    pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] [contact eps sigma]
+                  [triangles eps sigma] [selftriangles eps sigma]
    pair_coeff I J none
    pair_coeff I J file <parameter file> wallfluid|wallwall
 ------------------------------------------------------------------------- */
@@ -591,7 +647,7 @@ void PairCellWall::coeff(int narg, char **arg)
       if (k == NTERMS)
         error->all(FLERR,
                    "Pair_coeff cell/wall: unknown keyword '{}' (expected repulsion, adhesion, "
-                   "contact, triangles, none or file)",
+                   "contact, triangles, selftriangles, none or file)",
                    arg[iarg]);
       const int term = 1 << k;
       if (c.terms & term) error->all(FLERR, "Pair_coeff cell/wall: {} given twice", TERM_NAMES[k]);
@@ -628,9 +684,12 @@ void PairCellWall::coeff(int narg, char **arg)
       } else if (term == CONTACT) {
         c.eps = v[0];
         c.sigma = v[1];
-      } else {
+      } else if (term == TRIANGLES) {
         c.teps = v[0];
         c.tsigma = v[1];
+      } else {
+        c.seps = v[0];
+        c.ssigma = v[1];
       }
     }
   }
@@ -729,6 +788,13 @@ void PairCellWall::check(const Coeff &c, const std::string &from)
     if (!(c.tsigma > 0.0))
       error->all(FLERR, "Pair_coeff cell/wall: triangles sigma = {} must be > 0{}", c.tsigma, from);
   }
+  if (c.terms & SELFTRIANGLES) {
+    if (!(c.seps > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: selftriangles eps = {} must be > 0{}", c.seps, from);
+    if (!(c.ssigma > 0.0))
+      error->all(FLERR, "Pair_coeff cell/wall: selftriangles sigma = {} must be > 0{}", c.ssigma,
+                 from);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -752,24 +818,30 @@ void PairCellWall::init_style()
                    "weights 1-2 = {}, 1-3 = {}); use 'special_bonds lj 0 0 1'",
                    special_lj[1], special_lj[2]);
 
+  int other = 0;
   triangles = 0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j] && (coeffs[i][j].terms & TRIANGLES)) triangles = 1;
+      if (setflag[i][j]) {
+        if (coeffs[i][j].terms & TRIANGLES) other = 1;
+        if (coeffs[i][j].terms & (TRIANGLES | SELFTRIANGLES)) triangles = 1;
+      }
   if (!triangles) return;
   if (!atom->molecule_flag || !atom->num_angle || !force->angle)
     error->all(FLERR,
-               "Pair cell/wall: triangles needs cell (molecule) IDs and the wall triangles as "
-               "angles: use atom_style angle or molecular and an angle style (angle_style zero)");
+               "Pair cell/wall: triangles and selftriangles need cell (molecule) IDs and the wall "
+               "triangles as angles: use atom_style angle or molecular and an angle style "
+               "(angle_style zero)");
   if (!force->newton_pair)
     error->all(FLERR,
-               "Pair cell/wall: triangles needs newton pair on (the reactions go to ghost "
-               "triangle vertices)");
+               "Pair cell/wall: triangles and selftriangles need newton pair on (the reactions go "
+               "to ghost triangle vertices)");
   // LAMMPS drops the pairs whose lj and coul weights are both 0 from the list; a pair of two
-  // cells may be a special pair (the two atoms of a junction bond are 1-2)
+  // cells may be a special pair (the two atoms of a junction bond are 1-2); the own wall's
+  // dropped partners are taken from the special lists (find_touching)
   const double *special_coul = force->special_coul;
   for (int k = 1; k <= 3; k++)
-    if (special_lj[k] == 0.0 && special_coul[k] == 0.0)
+    if (other && special_lj[k] == 0.0 && special_coul[k] == 0.0)
       error->all(FLERR,
                  "Pair cell/wall: triangles needs every pair of atoms of two cells in the "
                  "neighbour list, and special_bonds lj and coul weights 1-{} = 0 drop the 1-{} "
@@ -841,6 +913,16 @@ double PairCellWall::init_one(int i, int j)
     // longest edge b-a, b-c (the run's allowance, which holds the skin)
     neighbour = std::max(neighbour, c.treach + tris->edge_cap());
   }
+  if (c.terms & SELFTRIANGLES) {
+    c.ssigsq = c.ssigma * c.ssigma;
+    // WCA reach 2^(1/6) sigma
+    c.sreach = pow(2.0, 1.0 / 6.0) * c.ssigma;
+    if (c.sreach > cut) {
+      cut = c.sreach;
+      longest = "selftriangles reach 2^(1/6) sigma";
+    }
+    neighbour = std::max(neighbour, c.sreach + tris->edge_cap());
+  }
   if (cut > cut_global)
     error->all(FLERR,
                "Pair cell/wall: atom types {} {} reach {} ({}), beyond the pair_style cell/wall "
@@ -873,7 +955,9 @@ void PairCellWall::write_restart(FILE *fp)
                                   c.sigma,
                                   (double) c.smooth,
                                   c.teps,
-                                  c.tsigma};
+                                  c.tsigma,
+                                  c.seps,
+                                  c.ssigma};
         fwrite(&c.terms, sizeof(int), 1, fp);
         fwrite(v, sizeof(double), NPARAM, fp);
       }
@@ -894,10 +978,12 @@ void PairCellWall::read_restart(FILE *fp)
       if (setflag[i][j]) {
         int terms = 0;
         double v[NPARAM] = {};
-        // versions 1 and 2 end each pair at sigma (no smooth flag: a cut adhesion), 3 at smooth
-        const int nparam = restart_version >= 4 ? NPARAM
-            : restart_version >= 3              ? NPARAM - 2
-                                                : NPARAM - 3;
+        // versions 1 and 2 end each pair at sigma (no smooth flag: a cut adhesion), 3 at smooth,
+        // 4 at the triangles' sigma
+        const int nparam = restart_version >= 5 ? NPARAM
+            : restart_version >= 4              ? NPARAM - 2
+            : restart_version >= 3              ? NPARAM - 4
+                                                : NPARAM - 5;
         if (me == 0) {
           utils::sfread(FLERR, &terms, sizeof(int), 1, fp, nullptr, error);
           utils::sfread(FLERR, v, sizeof(double), nparam, fp, nullptr, error);
@@ -919,6 +1005,8 @@ void PairCellWall::read_restart(FILE *fp)
         c.smooth = (int) v[10];
         c.teps = v[11];
         c.tsigma = v[12];
+        c.seps = v[13];
+        c.ssigma = v[14];
         coeffs[i][j] = c;
       }
     }
@@ -957,6 +1045,7 @@ std::string PairCellWall::describe(const Coeff &c) const
         fmt::format(" adhesion {} {} {} {}{}", c.D, c.alpha, c.ra, c.rc, c.smooth ? " smooth" : "");
   if (c.terms & CONTACT) s += fmt::format(" contact {} {}", c.eps, c.sigma);
   if (c.terms & TRIANGLES) s += fmt::format(" triangles {} {}", c.teps, c.tsigma);
+  if (c.terms & SELFTRIANGLES) s += fmt::format(" selftriangles {} {}", c.seps, c.ssigma);
   return s.empty() ? " none" : s;
 }
 

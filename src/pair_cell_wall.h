@@ -42,7 +42,13 @@ class PairCellWall : public Pair {
   void request_wall_load(int fluidtype, int walltype, const std::string &who);
   double **wall_load() const { return load; }
 
-  enum Term { REPULSION = 1 << 0, ADHESION = 1 << 1, CONTACT = 1 << 2, TRIANGLES = 1 << 3 };
+  enum Term {
+    REPULSION = 1 << 0,
+    ADHESION = 1 << 1,
+    CONTACT = 1 << 2,
+    TRIANGLES = 1 << 3,
+    SELFTRIANGLES = 1 << 4
+  };
 
   // the terms of one type pair: parameters as given, then constants precomputed in init_one()
   struct Coeff {
@@ -52,9 +58,11 @@ class PairCellWall : public Pair {
     int smooth;                 // adhesion force tapered to zero at rc (1) or cut there (0)
     double eps, sigma;          // contact
     double teps, tsigma;        // triangles: contact with the other walls' triangles
+    double seps, ssigma;        // selftriangles: contact with the own wall's far triangles
     int half1, half2;           // p1/2, p2/2 when they are integers (powint), else 0
     double r0sq, rasq, rcsq, two_alpha_d, taper, u_rc, u_below_ra, sigsq, contactsq;
     double tsigsq, treach;    // triangles: sigma^2, reach 2^(1/6) sigma
+    double ssigsq, sreach;    // selftriangles: sigma^2, reach 2^(1/6) sigma
     double paircutsq;         // (reach of the pair terms)^2: repulsion, adhesion, contact
   };
 
@@ -68,17 +76,20 @@ class PairCellWall : public Pair {
   // the list's pairs within their cutoff + margin, from each neighbour build (near_pairs)
   std::vector<int> nearfirst, nearj;
 
-  // triangles: a wall atom against the triangles of other cells' walls (doc/pair_cell_wall.md)
-  int triangles;                    // 1 if any type pair has the term
+  // triangles: a wall atom against the triangles of other cells' walls, selftriangles: against
+  // its own wall's triangles it is not a vertex of (doc/pair_cell_wall.md)
+  int triangles;                    // 1 if any type pair has either term
   class CellWallTriangles *tris;    // the triangles, kept by their middle angle atoms
   // (wall atom, a, b, c) within the reach + margin at the last neighbour build
   std::vector<std::array<int, 4>> touching;
   // per atom, its nearest triangle of another cell within reach this step: d^2, 1 if the atom is
-  // behind its face (else 0), the triangle's cell and the tags of a, b, c (NEAR columns)
+  // behind its face (else 0), the triangle's cell and the tags of a, b, c (NEAR columns); then
+  // the same for its nearest own triangle that it is not a vertex of (NEAR more)
   int nmax_near;
   double **nearest;
   int comm_nearest;    // 1 while reverse comm carries nearest (else the wall load)
   void find_touching(double);
+  void touch_kept(int w, int b, double reach, bool self);
   template <int EVFLAG> void triangle_contacts();
   void check_crossing();
 
