@@ -46,6 +46,11 @@ static constexpr int NTERMS = 5;
 static constexpr int NPARAM = 15;
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
+// a wall atom behind its nearest face has crossed it only if nearer than CROSS_DEPTH x the reach:
+// an atom that goes through a face passes d = 0 and is first seen behind it at about one step's
+// displacement; a face that comes within reach with the atom already behind it is a fold of that
+// wall turning its back to the atom (doc/pair_cell_wall.md, Crossing stop)
+static constexpr double CROSS_DEPTH = 0.5;
 // columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c; the
 // nearest of another cell's, then (from column NEAR) of the own wall's
 static constexpr int NEAR = 6;
@@ -363,10 +368,10 @@ template <int EVFLAG> void PairCellWall::triangle_contacts()
     if (dsq >= reach * reach) continue;
     double *near = nearest[w] + (self ? NEAR : 0);
     if (near[0] < 0.0 || dsq < near[0]) {
-      // behind the face: in the face region and (x_w - p) . n <= 0, n = (b - a) x (c - a) outward
-      // (on the face, d = 0, the wall atom has no side)
+      // behind the face: in the face region, (x_w - p) . n <= 0, n = (b - a) x (c - a) outward,
+      // and nearer than CROSS_DEPTH x the reach (on the face, d = 0, the wall atom has no side)
       double behind = dsq == 0.0 ? 1.0 : 0.0;
-      if (ft.face && dsq > 0.0) {
+      if (ft.face && dsq > 0.0 && dsq < CROSS_DEPTH * CROSS_DEPTH * reach * reach) {
         const double ab[3] = {x[b][0] - x[a][0], x[b][1] - x[a][1], x[b][2] - x[a][2]};
         const double ac[3] = {x[c][0] - x[a][0], x[c][1] - x[a][1], x[c][2] - x[a][2]};
         double n[3];
