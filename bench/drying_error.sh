@@ -5,7 +5,8 @@
 # and the wrinkling at X/X0 = 0.5 and 0.2 of cheaper runs (coarser wall, more physical time per
 # step) against a reference run (the first point: finer or less accelerated), and the wall-clock
 # of each run. Prints a table. Points: "NWALL TSTEP" pairs, TSTEP = physical time per step (s) =
-# accel x dt, optionally followed by a time-step factor DTF (dt = DTF x the scaled dt below, uptake
+# accel x dt, or aACCEL (e.g. a3e6: accel fixed, so the mechanical lag is the same at every
+# resolution while dt follows the fluid spacing: the convergence series), optionally followed by a time-step factor DTF (dt = DTF x the scaled dt below, uptake
 # steps and output interval / DTF, accel = TSTEP / dt: the same physical time per step in fewer,
 # longer steps) and a
 # neighbour skin SKIN (in h; default the scene's 0.16; another skin changes only the round-off, so
