@@ -25,7 +25,9 @@
 using namespace LAMMPS_NS;
 
 static const char *const REFERENCE_NAMES[] = {"xref", "flat"};
-static constexpr int RESTART_VERSION = 1;    // 1: -version, G, t0, reference per type
+static const char *const FORM_NAMES[] = {"cos", "tan"};
+// 1: -version, G, t0, reference per type; 2: and form per type (version 1: cos)
+static constexpr int RESTART_VERSION = 2;
 
 namespace {
 
@@ -64,7 +66,8 @@ bool hinge(const double *e, const double *u1, const double *u2, Hinge &h)
 /* ---------------------------------------------------------------------- */
 
 DihedralCellBending::DihedralCellBending(LAMMPS *lmp) :
-    Dihedral(lmp), shear(nullptr), thickness(nullptr), reference(nullptr), kappa(nullptr), ixref(-1)
+    Dihedral(lmp), shear(nullptr), thickness(nullptr), reference(nullptr), form(nullptr),
+    kappa(nullptr), ixref(-1)
 {
   writedata = 1;
 }
@@ -78,6 +81,7 @@ DihedralCellBending::~DihedralCellBending()
     memory->destroy(shear);
     memory->destroy(thickness);
     memory->destroy(reference);
+    memory->destroy(form);
     memory->destroy(kappa);
   }
 }
@@ -143,9 +147,26 @@ void DihedralCellBending::compute(int eflag, int vflag)
     const double c0 = reference[type] == FLAT ? 1.0 : h0.c;
     const double s0 = reference[type] == FLAT ? 0.0 : h0.s;
 
-    // E = k (1 - cos(theta - theta0)), dE/dtheta = k sin(theta - theta0)
-    const double edihedral = k * (1.0 - h.c * c0 - h.s * s0);
-    const double dedth = k * (h.s * c0 - h.c * s0);
+    // 1 - cos(theta - theta0) and sin(theta - theta0)
+    const double omc = 1.0 - h.c * c0 - h.s * s0;
+    const double sin_bend = h.s * c0 - h.c * s0;
+    double edihedral, dedth;
+    if (form[type] == TAN) {
+      const double opc = 2.0 - omc;    // 1 + cos(theta - theta0)
+      if (opc <= 0.0)
+        error->one(FLERR,
+                   "Dihedral cell/bending: dihedral {}-{}-{}-{} is folded flat onto itself "
+                   "(theta - theta0 = pi), where the energy of form tan is infinite",
+                   tag[i1], tag[i2], tag[i3], tag[i4]);
+      // E = 2k tan^2((theta - theta0)/2) = 2k (1 - cos)/(1 + cos), dE/dtheta = 4k sin/(1 + cos)^2
+      // (doc/dihedral_cell_bending.md, form tan)
+      edihedral = 2.0 * k * omc / opc;
+      dedth = 4.0 * k * sin_bend / (opc * opc);
+    } else {
+      // E = k (1 - cos(theta - theta0)), dE/dtheta = k sin(theta - theta0)
+      edihedral = k * omc;
+      dedth = k * sin_bend;
+    }
 
     // dtheta/dx_a = -|e| n1 / |n1|^2, dtheta/dx_d = -|e| n2 / |n2|^2; the edge atoms take
     // -(1 - s) and -s of them, s the position of a (d) projected on the edge, so that the forces
@@ -187,6 +208,7 @@ void DihedralCellBending::allocate()
   memory->create(shear, n, "dihedral:shear");
   memory->create(thickness, n, "dihedral:thickness");
   memory->create(reference, n, "dihedral:reference");
+  memory->create(form, n, "dihedral:form");
   memory->create(kappa, n, "dihedral:kappa");
   memory->create(setflag, n, "dihedral:setflag");
   for (int i = 0; i < n; i++) {
@@ -204,18 +226,19 @@ void DihedralCellBending::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   dihedral_coeff N G t0 [reference xref|flat]
-   dihedral_coeff N file <parameter file> [reference xref|flat]     (keys wall_G, wall_t0)
+   dihedral_coeff N G t0 [reference xref|flat] [form cos|tan]
+   dihedral_coeff N file <parameter file> [reference xref|flat] [form cos|tan]
+   (file keys wall_G, wall_t0)
 ------------------------------------------------------------------------- */
 
 void DihedralCellBending::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
-  if (narg != 3 && narg != 5)
+  if (narg < 3 || narg % 2 == 0)
     error->all(FLERR,
                "Incorrect args for dihedral_coeff cell/bending: expected 'dihedral_coeff <type> "
-               "<G> <t0> [reference xref|flat]' or 'dihedral_coeff <type> file <parameter file> "
-               "[reference xref|flat]', got {} args",
+               "<G> <t0> [reference xref|flat] [form cos|tan]' or 'dihedral_coeff <type> file "
+               "<parameter file> [reference xref|flat] [form cos|tan]', got {} args",
                narg);
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->ndihedraltypes, ilo, ihi, error);
@@ -234,17 +257,24 @@ void DihedralCellBending::coeff(int narg, char **arg)
       error->all(FLERR, "Dihedral_coeff cell/bending: wall thickness t0 = {} must be > 0", t_one);
   }
   int ref_one = XREF;
-  if (narg == 5) {
-    if (strcmp(arg[3], "reference") != 0)
-      error->all(FLERR, "Dihedral_coeff cell/bending: unknown keyword '{}' (expected 'reference')",
-                 arg[3]);
-    ref_one = parse_reference(arg[4]);
+  int form_one = COS;
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "reference") == 0)
+      ref_one = parse_reference(arg[iarg + 1]);
+    else if (strcmp(arg[iarg], "form") == 0)
+      form_one = parse_form(arg[iarg + 1]);
+    else
+      error->all(FLERR,
+                 "Dihedral_coeff cell/bending: unknown keyword '{}' (expected 'reference' or "
+                 "'form')",
+                 arg[iarg]);
   }
 
   for (int i = ilo; i <= ihi; i++) {
     shear[i] = g_one;
     thickness[i] = t_one;
     reference[i] = ref_one;
+    form[i] = form_one;
     setflag[i] = 1;
   }
 }
@@ -258,6 +288,16 @@ int DihedralCellBending::parse_reference(const std::string &name)
   error->all(FLERR, "Dihedral_coeff cell/bending: unknown reference '{}' (expected xref or flat)",
              name);
   return XREF;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int DihedralCellBending::parse_form(const std::string &name)
+{
+  for (int f : {COS, TAN})
+    if (name == FORM_NAMES[f]) return f;
+  error->all(FLERR, "Dihedral_coeff cell/bending: unknown form '{}' (expected cos or tan)", name);
+  return COS;
 }
 
 /* ----------------------------------------------------------------------
@@ -282,7 +322,7 @@ void DihedralCellBending::init_style()
 void DihedralCellBending::write_restart(FILE *fp)
 {
   CellRestart::write_columns(fp, RESTART_VERSION, atom->ndihedraltypes, &shear[1], &thickness[1],
-                             &reference[1]);
+                             &reference[1], &form[1]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -291,8 +331,13 @@ void DihedralCellBending::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->ndihedraltypes;
-  CellRestart::read_version(lmp, fp, FLERR, "Dihedral style cell/bending", RESTART_VERSION);
+  const int version =
+      CellRestart::read_version(lmp, fp, FLERR, "Dihedral style cell/bending", RESTART_VERSION);
   CellRestart::read_columns(lmp, fp, n, &shear[1], &thickness[1], &reference[1]);
+  if (version >= 2)
+    CellRestart::read_column(lmp, fp, n, &form[1]);
+  else
+    for (int i = 1; i <= n; i++) form[i] = COS;    // version 1 had the cos form only
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
@@ -301,6 +346,6 @@ void DihedralCellBending::read_restart(FILE *fp)
 void DihedralCellBending::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->ndihedraltypes; i++)
-    fprintf(fp, "%d %.16g %.16g reference %s\n", i, shear[i], thickness[i],
-            REFERENCE_NAMES[reference[i]]);
+    fprintf(fp, "%d %.16g %.16g reference %s form %s\n", i, shear[i], thickness[i],
+            REFERENCE_NAMES[reference[i]], FORM_NAMES[form[i]]);
 }

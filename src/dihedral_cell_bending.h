@@ -25,15 +25,18 @@ class DihedralCellBending : public Dihedral {
   void write_data(FILE *) override;
 
   enum Reference { XREF = 0, FLAT = 1 };
+  enum Form { COS = 0, TAN = 1 };    // k (1 - cos(theta - theta0)) or 2k tan^2((theta - theta0)/2)
 
  protected:
   double *shear, *thickness;    // G, t0 per dihedral type
   int *reference;               // rest angle from xref, or 0 (flat)
+  int *form;                    // energy law of the bend theta - theta0 (Form)
   double *kappa;                // bending rigidity G t0^3 / 3, precomputed per type
   int ixref;                    // index of the per-atom reference positions (d2_xref 3)
 
   void allocate();
   int parse_reference(const std::string &);
+  int parse_form(const std::string &);
 };
 
 }    // namespace LAMMPS_NS

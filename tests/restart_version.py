@@ -9,6 +9,8 @@
   restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 8 in
                                                the layout of version 5 (no tensile eps, n, dp; no
                                                wall adhesion W per type pair; no grow)
+  restart_version.py IN OUT older cell/bending the dihedral cell/bending payload of version 2 in
+                                               the layout of version 1 (no form per type)
 
 STYLE is cell/sph, cell/wall, cell/neohookean, cell/lamella, cell/turgor or cell/bending
 (unversioned: not cell/sph, whose version 1 also lacks the per-pair wall flag, nor cell/lamella or
@@ -78,6 +80,27 @@ def atom_types(data):
     sys.exit("restart_version.py: no NTYPES in the restart header")
 
 
+def dihedral_types(data):
+    """The number of dihedral types from the restart header: the NDIHEDRALS token (24, a bigint)
+    followed by the NDIHEDRALTYPES token (25, an int), as LAMMPS's write_restart writes them."""
+    key = struct.pack("=i", 24)
+    start = data.find(key)
+    while start >= 0:
+        if struct.unpack_from("=i", data, start + 12)[0] == 25:
+            return struct.unpack_from("=i", data, start + 16)[0]
+        start = data.find(key, start + 1)
+    sys.exit("restart_version.py: no NDIHEDRALTYPES in the restart header")
+
+
+def bending_to_version1(data, at):
+    """Drop the form column (n ints) of the version-2 dihedral cell/bending payload whose marker is
+    at offset at: after the marker come n values each of G, t0 (doubles) and reference (int)."""
+    n = dihedral_types(data)
+    start = at + 8 + 2 * 8 * n + 4 * n
+    del data[start:start + 4 * n]
+    struct.pack_into("=d", data, at, -1.0)
+
+
 def sph_to_version5(data, at, version):
     """Drop the version-6 settings (tensile eps double, n int, dp double) of the pair cell/sph
     payload whose marker is at offset at: after the marker, kernel eos (int), cutoff (double),
@@ -106,7 +129,7 @@ def main():
     data = bytearray(open(src, "rb").read())
     for style in styles:
         if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/lamella", "cell/bending")) or (
-                mode == "older" and style not in ("cell/turgor", "cell/sph")):
+                mode == "older" and style not in ("cell/turgor", "cell/sph", "cell/bending")):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
@@ -118,6 +141,11 @@ def main():
                 sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 8")
             sph_to_version5(data, at, version)
             print(f"restart_version.py: {style} payload version {version} -> 5")
+        elif style == "cell/bending" and mode == "older":
+            if version != 2:
+                sys.exit(f"restart_version.py: cell/bending payload version {version}, expected 2")
+            bending_to_version1(data, at)
+            print(f"restart_version.py: {style} payload version {version} -> 1")
         elif mode == "older":
             print(f"restart_version.py: {style} payload version {version} -> 2")
         elif mode == "newer":
