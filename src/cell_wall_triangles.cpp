@@ -143,6 +143,8 @@ int CellWallTriangles::pack(int n, const int *list, double *buf) const
 
 void CellWallTriangles::unpack(int n, int first, const double *buf)
 {
+  double **x = atom->x;
+  const double capsq = edgecap * edgecap;
   int m = 0;
   for (int i = first; i < first + n; i++) {
     tricount[i] = static_cast<int>(buf[m++]);
@@ -150,7 +152,15 @@ void CellWallTriangles::unpack(int n, int first, const double *buf)
     for (int v = 0; v < 2 * tricount[i]; v++) {
       const tagint tag = static_cast<tagint>(ubuf(buf[m++]).i);
       const int k = atom->map(tag);
-      trivert.push_back(k < 0 ? -1 : domain->closest_image(i, k));
+      int w = k < 0 ? -1 : domain->closest_image(i, k);
+      // the closest image this rank has may be another periodic image than the vertex's (which
+      // lies beyond the ghost cutoff): farther than the run's edge allowance, it is not the
+      // vertex; the triangle is then not on this rank (doc/pair_cell_sph.md, Cost control)
+      if (w >= 0) {
+        const double del[3] = {x[w][0] - x[i][0], x[w][1] - x[i][1], x[w][2] - x[i][2]};
+        if (del[0] * del[0] + del[1] * del[1] + del[2] * del[2] > capsq) w = -1;
+      }
+      trivert.push_back(w);
       tritag.push_back(tag);
     }
   }

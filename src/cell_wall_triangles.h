@@ -3,7 +3,8 @@
    CellWallTriangles: the wall triangles (angles a b c, outward) on this rank, each kept by its
    middle atom b as the local indices of a and c, found again on every reneighbouring: owned atoms
    from their angle arrays, ghosts from the tags their owners send by forward comm, each vertex the
-   image closest to b. The longest edge b-a, b-c until the next build is checked against the run's
+   image closest to b (for a ghost b none beyond the edge allowance: that is another periodic
+   image). The longest edge b-a, b-c until the next build is checked against the run's
    allowance (1.5 x the longest at the run's start), which sets the owner's neighbour range. Owned
    by pair cell/sph (wall boundary) and pair cell/wall (triangle contact); the owner routes its
    forward comm to pack()/unpack() (doc/pair_cell_sph.md, doc/pair_cell_wall.md).
