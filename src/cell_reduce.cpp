@@ -121,6 +121,10 @@ int CellReduce::custom_vector(const char *name) const
 void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
                         std::vector<tagint> *corners)
 {
+  // the ghosts' positions as their owned atoms' now: a fix's end_of_step may have moved or remapped
+  // the owned atoms since the step's communication (fix press/berendsen ... dilate all), and the
+  // triangles take their corners from ghosts (the same values on any number of ranks)
+  comm->forward_comm();
   cells.map_atoms();
   const std::vector<int> &cellof = cells.cell_of_atom();
   local.assign(NCOLUMN * cells.touched().size(), 0.0);

@@ -165,10 +165,6 @@ void ComputeCellProps::init()
 void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
-  // the ghosts' positions as their owned atoms' now: a fix's end_of_step may have moved or remapped
-  // the owned atoms since the step's communication (fix press/berendsen ... dilate all), and the
-  // triangles take their corners from ghosts (the same values on any number of ranks)
-  comm->forward_comm();
   cells->reduce(nullptr, &mine, &corners);
   count_outside();
   if (!homes_checked) check_homes();

@@ -13,7 +13,6 @@
 #include "cell_hull.h"
 #include "cell_reduce.h"
 #include "cell_section.h"
-#include "comm.h"
 #include "error.h"
 #include "math_const.h"
 #include "memory.h"
@@ -111,10 +110,6 @@ void ComputeCellShape::init()
 void ComputeCellShape::compute_array()
 {
   invoked_array = update->ntimestep;
-  // the ghosts' positions as their owned atoms' now: a fix's end_of_step may have moved or remapped
-  // the owned atoms since the step's communication (fix press/berendsen ... dilate all), and the
-  // triangles take their corners from ghosts (the same values on any number of ranks)
-  comm->forward_comm();
   cells->reduce(nullptr, &mine, &corners);
   cells->home_triangles(mine, corners, *walls);
 
