@@ -68,34 +68,23 @@ def turgor_to_version2(data, at, version):
     struct.pack_into("=d", data, at, -2.0)
 
 
-def atom_types(data):
-    """The number of atom types from the restart header: the NATOMS token (16, a bigint) followed
-    by the NTYPES token (17, an int), as LAMMPS's write_restart writes them."""
-    key = struct.pack("=i", 16)
+def header_count(data, total, count, name):
+    """A type count from the restart header: the token total (a bigint: NATOMS 16, NDIHEDRALS 24)
+    followed by the token count (an int: NTYPES 17, NDIHEDRALTYPES 25), as LAMMPS's write_restart
+    writes them."""
+    key = struct.pack("=i", total)
     start = data.find(key)
     while start >= 0:
-        if struct.unpack_from("=i", data, start + 12)[0] == 17:
+        if struct.unpack_from("=i", data, start + 12)[0] == count:
             return struct.unpack_from("=i", data, start + 16)[0]
         start = data.find(key, start + 1)
-    sys.exit("restart_version.py: no NTYPES in the restart header")
-
-
-def dihedral_types(data):
-    """The number of dihedral types from the restart header: the NDIHEDRALS token (24, a bigint)
-    followed by the NDIHEDRALTYPES token (25, an int), as LAMMPS's write_restart writes them."""
-    key = struct.pack("=i", 24)
-    start = data.find(key)
-    while start >= 0:
-        if struct.unpack_from("=i", data, start + 12)[0] == 25:
-            return struct.unpack_from("=i", data, start + 16)[0]
-        start = data.find(key, start + 1)
-    sys.exit("restart_version.py: no NDIHEDRALTYPES in the restart header")
+    sys.exit(f"restart_version.py: no {name} in the restart header")
 
 
 def bending_to_version1(data, at):
     """Drop the form column (n ints) of the version-2 dihedral cell/bending payload whose marker is
     at offset at: after the marker come n values each of G, t0 (doubles) and reference (int)."""
-    n = dihedral_types(data)
+    n = header_count(data, 24, 25, "NDIHEDRALTYPES")
     start = at + 8 + 2 * 8 * n + 4 * n
     del data[start:start + 4 * n]
     struct.pack_into("=d", data, at, -1.0)
@@ -111,7 +100,7 @@ def sph_to_version5(data, at, version):
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
     del data[start:start + 8 + 4 + 8 + (8 if version >= 8 else 0)]
     if version >= 7:
-        n = atom_types(data)
+        n = header_count(data, 16, 17, "NTYPES")
         pos = start
         for _ in range(n * (n + 1) // 2):
             (setflag,) = struct.unpack_from("=i", data, pos)
