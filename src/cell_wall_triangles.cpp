@@ -6,6 +6,7 @@
 #include "cell_wall_triangles.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
@@ -87,6 +88,7 @@ void CellWallTriangles::build()
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   double edge = 0.0;
+  tagint edgetag[2] = {0, 0};
   trivert.clear();
   tritag.clear();
   for (int i = 0; i < nlocal; i++) {
@@ -104,7 +106,12 @@ void CellWallTriangles::build()
         const int v = k < 0 ? -1 : domain->closest_image(i, k);
         if (v >= 0) {
           const double del[3] = {x[v][0] - x[i][0], x[v][1] - x[i][1], x[v][2] - x[i][2]};
-          edge = std::max(edge, del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+          const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+          if (rsq > edge) {
+            edge = rsq;
+            edgetag[0] = atom->tag[i];
+            edgetag[1] = tag;
+          }
         }
         trivert.push_back(v);
         tritag.push_back(tag);
@@ -116,12 +123,20 @@ void CellWallTriangles::build()
   edge = sqrt(edge);
   MPI_Allreduce(&edge, &edgemax, 1, MPI_DOUBLE, MPI_MAX, world);
   edgemax += neighbor->skin;
-  if (edgemax > edgecap)
+  if (edgemax > edgecap) {
+    // name the edge: the atoms of the rank with the longest one (the lowest such rank)
+    int me, owner;
+    MPI_Comm_rank(world, &me);
+    const int mine = (edge + neighbor->skin == edgemax) ? me : comm->nprocs;
+    MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MIN, world);
+    MPI_Bcast(edgetag, 2, MPI_LMP_TAGINT, owner, world);
     error->all(FLERR,
-               "{}: a wall edge grew to {:.4g} m on step {}, beyond the {:.4g} m {} allows in "
-               "this run (1.5 x the longest edge at the run's start): split the run (each run "
-               "command measures the wall again)",
-               style, edgemax - neighbor->skin, update->ntimestep, edgecap - neighbor->skin, range);
+               "{}: the wall edge of atoms {} and {} grew to {:.4g} m on step {}, beyond the "
+               "{:.4g} m {} allows in this run (1.5 x the longest edge at the run's start): "
+               "split the run (each run command measures the wall again)",
+               style, edgetag[0], edgetag[1], edgemax - neighbor->skin, update->ntimestep,
+               edgecap - neighbor->skin, range);
+  }
   for (int i = nlocal; i < nall; i++) tricount[i] = 0;
 }
 
