@@ -51,15 +51,19 @@ for v in ${VARIANTS:-base:-}; do
     if [ "$lattice" = shells ]; then
       vars+=(-var rfill "$(sed -nE 's/.*fill radius ([0-9.e+-]+) m.*/\1/p' cellgen.log)")
     fi
+    # the variant's settings go first: LAMMPS keeps the first -var of a name (index variables are
+    # not redefined), so a setting placed after the defaults above would be ignored
+    over=()
     if [ ${#kv[@]} -gt 0 ]; then
       for s in "${kv[@]}"; do
         key=${s%%=*} val=${s#*=}
         if [ "$key" = lattice ]; then continue; fi
         # eta: h/dx of the start as well (h = eta dx, dx from cellgen)
-        if [ "$key" = eta ]; then vars+=(-var h "$(python3 -c "print($h*$val/1.27)")"); fi
-        vars+=(-var "$key" "${val//+/ }")
+        if [ "$key" = eta ]; then over+=(-var h "$(python3 -c "print($h*$val/1.27)")"); fi
+        over+=(-var "$key" "${val//+/ }")
       done
     fi
+    vars=("${over[@]}" "${vars[@]}")
     t0=$SECONDS
     mpirun -np "${NP:-1}" "$build/bin/lmp" -in "$here/wall_boundary.lmp" "${vars[@]}" -log log.lammps >out.txt
     res=$(grep RESULT out.txt)
