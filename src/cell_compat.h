@@ -87,6 +87,14 @@ namespace CellCompat {
   }
 #endif
 
+  // the ghost cutoff of comm mode single: the larger of comm_modify cutoff and the neighbour
+  // cutoff, the line of Comm::get_comm_cutoff() that 29 Sep 2021 and later releases share (called
+  // here, that function would print again the warnings that comm->setup() prints)
+  inline double ghost_cutoff(Comm *comm, Neighbor *neighbor)
+  {
+    return comm->cutghostuser > neighbor->cutneighmax ? comm->cutghostuser : neighbor->cutneighmax;
+  }
+
   // yes/no/on/off/true/false as utils::logical() in current LAMMPS; -1 if none of these
   inline int logical(const char *word)
   {

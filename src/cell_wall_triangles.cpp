@@ -6,6 +6,7 @@
 #include "cell_wall_triangles.h"
 
 #include "atom.h"
+#include "cell_compat.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -24,7 +25,7 @@ CellWallTriangles::CellWallTriangles(LAMMPS *lmp, const std::string &style,
                                      const std::string &range) :
     Pointers(lmp),
     style(style), range(range), nmax(0), tricount(nullptr), trifirst(nullptr), edgemax(0.0),
-    edgecap(0.0)
+    edgecap(0.0), spokemax(0.0)
 {
 }
 
@@ -87,7 +88,7 @@ void CellWallTriangles::build()
   double **x = atom->x;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  double edge = 0.0;
+  double edge = 0.0, spoke = 0.0;
   tagint edgetag[2] = {0, 0};
   trivert.clear();
   tritag.clear();
@@ -116,19 +117,29 @@ void CellWallTriangles::build()
         trivert.push_back(v);
         tritag.push_back(tag);
       }
+      const int a = trivert[trivert.size() - 2], c = trivert.back();
+      if (a >= 0 && c >= 0)
+        for (int v : {a, i, c}) {
+          // centroid g = (x_a + x_b + x_c) / 3 to vertex v (doc/pair_cell_sph.md, Restrictions)
+          double del[3];
+          for (int d = 0; d < 3; d++) del[d] = x[v][d] - (x[a][d] + x[i][d] + x[c][d]) / 3.0;
+          spoke = std::max(spoke, del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+        }
       tricount[i]++;
     }
   }
   // longest edge b-a, b-c until the next reneighbouring: now + the skin (each end moves < skin/2)
-  edge = sqrt(edge);
-  MPI_Allreduce(&edge, &edgemax, 1, MPI_DOUBLE, MPI_MAX, world);
-  edgemax += neighbor->skin;
+  const double mine[2] = {sqrt(edge), sqrt(spoke)};
+  double all[2];
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  edgemax = all[0] + neighbor->skin;
+  spokemax = all[1];
   if (edgemax > edgecap) {
     // name the edge: the atoms of the rank with the longest one (the lowest such rank)
     int me, owner;
     MPI_Comm_rank(world, &me);
-    const int mine = (edge + neighbor->skin == edgemax) ? me : comm->nprocs;
-    MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MIN, world);
+    const int holder = (mine[0] == all[0]) ? me : comm->nprocs;
+    MPI_Allreduce(&holder, &owner, 1, MPI_INT, MPI_MIN, world);
     MPI_Bcast(edgetag, 2, MPI_LMP_TAGINT, owner, world);
     error->all(FLERR,
                "{}: the wall edge of atoms {} and {} grew to {:.4g} m on step {}, beyond the "
@@ -138,6 +149,30 @@ void CellWallTriangles::build()
                edgecap - neighbor->skin, range);
   }
   for (int i = nlocal; i < nall; i++) tricount[i] = 0;
+}
+
+/* ----------------------------------------------------------------------
+   a rank has the atoms within the ghost cutoff of its subdomain at the build, so every vertex
+   within that cutoff of an owned atom (none on one rank in a box without periodic dimensions);
+   the owner's range from the owned atom is term + spokes x spoke + skins x skin
+   (doc/pair_cell_sph.md and doc/pair_cell_wall.md, Restrictions)
+------------------------------------------------------------------------- */
+
+void CellWallTriangles::check_ghost_cutoff(const char *what, double term, int spokes,
+                                           int skins) const
+{
+  if (comm->nprocs == 1 && !domain->xperiodic && !domain->yperiodic && !domain->zperiodic) return;
+  const double cut = CellCompat::ghost_cutoff(comm, neighbor);
+  const double skin = neighbor->skin;
+  const double range = term + spokes * spokemax + skins * skin;
+  if (cut < range)
+    error->all(FLERR,
+               "{}: the ghost cutoff {:.4g} m is shorter than the {:.4g} m from an owned atom "
+               "within which the wall triangles' vertices must be on its rank on step {} ({} "
+               "{:.4g} m + {} x the longest centroid-vertex distance {:.4g} m + {} x the skin "
+               "{:.4g} m): use 'comm_modify cutoff {:.3g}' or longer",
+               style, cut, range, update->ntimestep, what, term, spokes, spokemax, skins, skin,
+               1.01 * range);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -35,9 +35,14 @@ class CellWallTriangles : protected Pointers {
   void grow(int nmax);
   // at a run's start: the allowance edgecap = 1.5 x the longest edge now + the skin
   void start_run();
-  // on reneighbouring: the owned atoms' triangles and the longest edge (stops beyond the
-  // allowance); the owner then forward-communicates (pack/unpack) for the ghosts'
+  // on reneighbouring: the owned atoms' triangles, the longest edge (stops beyond the allowance)
+  // and centroid-vertex distance; the owner then forward-communicates (pack/unpack) for the
+  // ghosts'
   void build();
+  // after build(), with the ghost cutoff of this build: stop unless it reaches the range within
+  // which the owner needs the vertices of a triangle about an owned atom, term (named what) +
+  // spokes x the longest centroid-vertex distance + skins x the skin
+  void check_ghost_cutoff(const char *what, double term, int spokes, int skins) const;
   int pack(int n, const int *list, double *buf) const;
   void unpack(int n, int first, const double *buf);
 
@@ -62,6 +67,7 @@ class CellWallTriangles : protected Pointers {
   std::vector<int> trivert;      // a, c of each kept triangle (-1: not on this rank)
   std::vector<tagint> tritag;    // their tags
   double edgemax, edgecap;
+  double spokemax;    // longest distance from a kept triangle's centroid to a vertex at the build
 };
 
 }    // namespace LAMMPS_NS

@@ -85,8 +85,8 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
     viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
     hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr),
-    adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
+    boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
+    adhesion(nullptr), adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr),
     refreshing(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr),
@@ -152,6 +152,10 @@ void PairCellSPH::compute(int eflag, int vflag)
   if (walls) {
     if (neighbor->ago == 0 || grown) {
       tris->build();
+      // a triangle whose centroid is within the support of f until the next build has its
+      // vertices within the support + its centroid-vertex distance + skin of f, and that
+      // distance grows by < skin (doc/pair_cell_sph.md, Restrictions)
+      tris->check_ghost_cutoff("the kernel support", wallsupport, 1, 2);
       commode = COMM_TRIANGLES;
       CellCompat::forward_comm(comm, this);
     }
@@ -1651,6 +1655,15 @@ void PairCellSPH::init_style()
                      "yes (now delay {} every {} check {}; the default of LAMMPS before 3 Nov "
                      "2022 is delay 10): atoms may move past the skin between builds",
                      neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
+    // the support at the largest h of a fluid type with a boundary (fixed: its h)
+    wallsupport = 0.0;
+    for (int i = 1; i <= n; i++)
+      for (int j = i; j <= n; j++)
+        if (setflag[i][j] && boundary[i][j]) {
+          const int f = setflag[i][i] ? i : j;
+          wallsupport = std::max(
+              wallsupport, CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]));
+        }
     tabulate_phi();
     wetting();
     comm_forward = std::max(3, CellWallTriangles::COMM_SIZE);

@@ -112,10 +112,11 @@ class PairCellSPH : public Pair {
 
   // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
   // cell's wall; the wall enters as the surface integral of its triangles (doc/pair_cell_sph.md)
-  int **boundary;      // 1 for a fluid-wall type pair of the wall boundary
-  int walls;           // 1 if any type pair is a boundary pair
-  double gamma_min;    // floor of the kernel fraction gamma inside the cell
-  double phidq;        // q step of the table of Phi(q) = kernel fraction beyond q = r/h
+  int **boundary;        // 1 for a fluid-wall type pair of the wall boundary
+  int walls;             // 1 if any type pair is a boundary pair
+  double wallsupport;    // the longest kernel support of a fluid type with a boundary in this run
+  double gamma_min;      // floor of the kernel fraction gamma inside the cell
+  double phidq;          // q step of the table of Phi(q) = kernel fraction beyond q = r/h
   std::vector<double> phi, dphi;    // Phi and dPhi/dq at the table points
   double *deficit;                  // 1 - gamma_i of fluid atom i
   // wall-fluid adhesion through the completion (pair_coeff <fluid> <wall> wall adhesion W):

@@ -83,7 +83,7 @@ static inline double ratio_power(double s, double p, int half)
 
 PairCellWall::PairCellWall(LAMMPS *lmp) :
     Pair(lmp), cut_global(0.0), coeffs(nullptr), restart_version(RESTART_VERSION), load_fluid(0),
-    load_wall(0), nmax_load(0), load(nullptr), triangles(0),
+    load_wall(0), nmax_load(0), load(nullptr), triangles(0), trireach(0.0),
     tris(new CellWallTriangles(lmp, "Pair cell/wall", "the triangle contact's neighbour range")),
     nmax_near(0), nearest(nullptr), comm_nearest(0)
 {
@@ -114,6 +114,9 @@ void PairCellWall::compute(int eflag, int vflag)
   if (triangles && neighbor->ago == 0) {
     tris->grow(atom->nmax);
     tris->build();
+    // a triangle within reach + skin of w at the build has its vertices within reach + skin + 2
+    // x its centroid-vertex distance of w (doc/pair_cell_wall.md, Restrictions)
+    tris->check_ghost_cutoff("the triangles' reach", trireach, 2, 1);
     CellCompat::forward_comm(comm, this);
   }
   // the pairs at a build, or at a run's setup without one ('run ... pre no'), where the atoms may
@@ -317,14 +320,9 @@ void PairCellWall::touch_kept(int w, int b, double reach, bool self)
   const tagint *tag = atom->tag;
   for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
     const int a = tris->a(t), v = tris->c(t);
-    if (a < 0 || v < 0)
-      error->one(FLERR,
-                 "Pair cell/wall: a vertex of a wall triangle kept by atom {} (cell {}) is not on "
-                 "this rank on step {}, and the triangle may be within reach of wall atom {} "
-                 "(cell {}): raise the ghost cutoff (comm_modify cutoff, now {:.4g} m) to the "
-                 "triangles' reach + twice the longest wall edge",
-                 tag[b], atom->molecule[b], update->ntimestep, tag[w], atom->molecule[w],
-                 comm->get_comm_cutoff());
+    // a vertex missing on this rank: the ghost cutoff, checked at the build, holds every vertex
+    // of a triangle within reach + skin of w, so this one stays out of reach until the next build
+    if (a < 0 || v < 0) continue;
     // a triangle w is a vertex of is no contact (doc/pair_cell_wall.md, Selftriangles)
     if (self && (tag[a] == tag[w] || tag[v] == tag[w])) continue;
     const CellTriangle::Foot ft = CellTriangle::closest(x[w], x[a], x[b], x[v]);
@@ -855,6 +853,7 @@ void PairCellWall::init_style()
                  k + 1, k + 1);
   comm_forward = CellWallTriangles::COMM_SIZE;
   tris->start_run();
+  trireach = 0.0;    // the longest reach, set by init_one()
 }
 
 /* ----------------------------------------------------------------------
@@ -917,6 +916,7 @@ double PairCellWall::init_one(int i, int j)
     // the neighbour list reaches the keeper b of every triangle within reach: reach + its
     // longest edge b-a, b-c (the run's allowance, which holds the skin)
     neighbour = std::max(neighbour, c.treach + tris->edge_cap());
+    trireach = std::max(trireach, c.treach);
   }
   if (c.terms & SELFTRIANGLES) {
     c.ssigsq = c.ssigma * c.ssigma;
@@ -927,6 +927,7 @@ double PairCellWall::init_one(int i, int j)
       longest = "selftriangles reach 2^(1/6) sigma";
     }
     neighbour = std::max(neighbour, c.sreach + tris->edge_cap());
+    trireach = std::max(trireach, c.sreach);
   }
   if (cut > cut_global)
     error->all(FLERR,

@@ -79,6 +79,7 @@ class PairCellWall : public Pair {
   // triangles: a wall atom against the triangles of other cells' walls, selftriangles: against
   // its own wall's triangles it is not a vertex of (doc/pair_cell_wall.md)
   int triangles;                    // 1 if any type pair has either term
+  double trireach;                  // the longest reach of either term in this run
   class CellWallTriangles *tris;    // the triangles, kept by their middle angle atoms
   // (wall atom, a, b, c) within the reach + margin at the last neighbour build
   std::vector<std::array<int, 4>> touching;
