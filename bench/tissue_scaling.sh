@@ -9,7 +9,9 @@
 # with each row and LAMMPS's "% CPU use" (the share of the wall-clock the ranks got): on a shared
 # machine the rate per CPU second (rate / CPU share) estimates the idle-machine rate, but Open MPI's
 # busy waiting counts as CPU use, so the 2-rank efficiency from it is an upper bound. About 15 minutes on an idle 2-core machine.
-#   bash bench/tissue_scaling.sh [quick]      (quick: the 27-cell rows and 10^3 cells only)
+#   bash bench/tissue_scaling.sh [quick|reduce]   (quick: the 27-cell rows and 10^3 cells only;
+#     reduce: the per-cell work only, at n^3 cells for each n of SIZES, default "10 22 46": 10^3,
+#     10^4 and 10^5 cells)
 # Environment: CELLSPH_BUILD (build folder), OUT (work folder, default /tmp/cellsph-bench/tissue).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -48,6 +50,7 @@ t, p, n, a, mem, cpu = $t, $p, $n, $a, $mem, $cpu
 print(f'| $name | {p} | {\"yes\" if $bal else \"no\"} | {a} | {n} | {t:.1f} | {a*n/t/p:.3g} | {cpu:.0f} | {a*n/t/p/(cpu/100):.3g} | {mem*p*1e6/a/1024:.2f} | $l0 |')"
 }
 
+if [ "$mode" != reduce ]; then
 echo "## Tissue: particle-steps per second per core (300 timed steps after 100)"
 echo
 echo "| tissue | ranks | fix balance | particles | steps | loop time (s) | particle-steps/s/core | CPU use (%) | particle-steps per CPU second per rank | memory per particle (kB) | load average at start |"
@@ -61,6 +64,7 @@ for c in "${cases[@]}"; do
   run_tissue "$name" 2 "$opts" "$bc" 1
 done
 
+fi
 echo
 echo "## fix cell/turgor's per-cell work per step against the number of cells"
 echo
@@ -68,6 +72,7 @@ echo "| cells | ranks | atoms | step without (ms) | step with fix cell/turgor ev
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|"
 sizes=(10 22)
 [ "$mode" = quick ] && sizes=(10)
+if [ "$mode" = reduce ]; then read -ra sizes <<< "${SIZES:-10 22 46}"; fi
 for n in "${sizes[@]}"; do
   for np in 1 2; do
     log=reduce_n${n}_np$np.log
