@@ -802,7 +802,9 @@ void PairCellWall::check(const Coeff &c, const std::string &from)
 
 /* ----------------------------------------------------------------------
    request a half list, forget wall-load requests (their styles renew them in their init); warn if
-   contact would act between bonded wall particles; with triangles, measure the wall's edges
+   contact would act between bonded (1-2) wall particles, which sit at the contact range (1-3
+   pairs, at least sqrt(3) spacings apart on a flat wall, may keep it: doc/pair_cell_wall.md);
+   with triangles, measure the wall's edges
 ------------------------------------------------------------------------- */
 
 void PairCellWall::init_style()
@@ -815,11 +817,11 @@ void PairCellWall::init_style()
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && (coeffs[i][j].terms & CONTACT)) contact = true;
   const double *special_lj = force->special_lj;
-  if (contact && atom->molecular && (special_lj[1] != 0.0 || special_lj[2] != 0.0) && comm->me == 0)
+  if (contact && atom->molecular && special_lj[1] != 0.0 && comm->me == 0)
     error->warning(FLERR,
                    "Pair cell/wall: contact acts between bonded wall particles (special_bonds lj "
-                   "weights 1-2 = {}, 1-3 = {}); use 'special_bonds lj 0 0 1'",
-                   special_lj[1], special_lj[2]);
+                   "weight 1-2 = {}); use 'special_bonds lj 0 0 1' or 'lj 0 1 1'",
+                   special_lj[1]);
 
   int other = 0;
   triangles = 0;
