@@ -100,6 +100,9 @@ QUOTES = [
     (r"equilibrium moisture content at a_w = 0\.3 is X = " + NUM + r" kg/kg, and a_w = 1 is "
      r"reached at\s+X = " + NUM + " kg/kg", "apple",
      [rounded(lambda p: gab(p, 0.3)), rounded(lambda p: gab(p, 1.0))]),
+    (r"takes over from van 't Hoff at X = " + NUM + r" \(X/X0 = " + NUM + r"\) at any temperature",
+     "apple", [rounded(lambda p: gab_takeover(p)),
+               rounded(lambda p: gab_takeover(p) * p["turgor_solids"] / (1 - p["turgor_solids"]))]),
     (r"The strength\s+sigma_c = " + NUM + r" MPa sits", "apple",
      [exact(lambda p: p["lamella_sigma"] / 1e6)]),
     (r"The stiffness K = " + NUM + r" Pa/m is", "apple", [exact(lambda p: p["lamella_K"])]),
@@ -119,6 +122,26 @@ def gab(p, a):
     """GAB isotherm X(a) of the file's turgor_gab_* keys (doc/model.md 5.10)."""
     y = p["turgor_gab_K"] * a
     return p["turgor_gab_Xm"] * p["turgor_gab_C"] * y / ((1 - y) * (1 - y + p["turgor_gab_C"] * y))
+
+
+def gab_takeover(p):
+    """X where the GAB sorption pressure -(R T/V_w) ln a(X) meets van 't Hoff's pi0 (T/Tref) X0/X
+    (doc/model.md 5.10): T cancels; pi0 at Tref = 298.15 K (fix cell/turgor's default), bisection
+    between X -> 0 (sorption larger) and X(a = 1) (sorption 0)."""
+    r_vw = 8.314462618 / 18.07e-6 * 298.15     # R Tref / V_w (src/cell_water.h)
+    x0 = (1 - p["turgor_solids"]) / p["turgor_solids"]
+    xm, c, k = p["turgor_gab_Xm"], p["turgor_gab_C"], p["turgor_gab_K"]
+
+    def excess(x):                              # sorption - van 't Hoff, both at Tref
+        b = xm * c - x * (c - 2)
+        a = 2 * x / (b + math.sqrt(b * b + 4 * x * x * (c - 1))) / k
+        return -r_vw * math.log(a) - p["turgor_pi0"] * x0 / x
+
+    lo, hi = 1e-6, gab(p, 1.0)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if excess(mid) > 0 else (lo, mid)
+    return 0.5 * (lo + hi)
 
 
 def read_params(path):
