@@ -3,8 +3,9 @@
 
 usage: test_tissue.py path/to/cellgen
 
-Generates coarse 2 x 2 x 2 tissues (periodic at porosity 0, 0.15, 0.3; a slab in z) and checks,
-recomputing everything from the data file: every wall closed (each edge in exactly two triangles,
+Generates coarse 2 x 2 x 2 tissues (periodic at porosity 0, 0.15, 0.3; a slab in z; 0.15 with 8 um
+walls for the contact areas; 3 x 3 x 3 unshrunk for the volume CV) and checks, recomputing
+everything from the data file: every wall closed (each edge in exactly two triangles,
 never twice in one direction, V - E + F = 2, wall bonds = triangle edges) and outward (signed
 volume > 0, every triangle outward seen from the cell's fluid); fluid inside its own wall (winding
 number) and at least the gap from it; walls of different cells at least the junction gap apart
@@ -478,7 +479,7 @@ def check_contact_areas(t, rows):
     if not checked:
         fail("no junction with facet particles on both sides to check the contact area")
         return
-    print("  contact areas of %d of %d faces within the wall meshes' bounds: area / upper bound "
+    print("  contact areas of %d of %d faces against the wall meshes: area / upper bound "
           "%.2f..%.2f, area / lower bound %.2f..%.2f" % (checked, len(faces),
           min(r[0] for r in ratios), max(r[0] for r in ratios), min(r[1] for r in ratios),
           max(r[1] for r in ratios)))
@@ -599,6 +600,11 @@ def main():
                     fail("same seed, different data file")
             bent = generate(cg, tmp, "p15d", extra + ["--dihedrals"])
             check_dihedrals(out, bent, read_stats(bent + ".stats"))
+    # the bounds tighten with the wall spacing: rounded cells at half the spacing of p15
+    print("contact areas, porosity 0.15, 8 um walls")
+    out = generate(cg, tmp, "fine", ["--porosity", "0.15", "--wall-dx", "8e-6"])
+    if os.path.exists(out):
+        check_contact_areas(Tissue(read_data(out)), read_junctions(out + ".junctions"))
     print("cell volume CV")
     check_volume_cv(cg, tmp)
     print("bad inputs")
