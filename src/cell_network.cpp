@@ -13,35 +13,6 @@
 
 using namespace LAMMPS_NS;
 
-/* ----------------------------------------------------------------------
-   x = m 2^(b - 1074), m the 53-bit significand, b = biased exponent - 1 (0 for subnormals): the
-   digits of m << (b % 32) go to limbs b / 32 and up
-------------------------------------------------------------------------- */
-
-void CellExactSum::add(double x)
-{
-  uint64_t bits;
-  memcpy(&bits, &x, sizeof bits);
-  const int exponent = (int) ((bits >> 52) & 0x7ff);
-  if (exponent == 0x7ff) {
-    limb[LIMBS]++;
-    return;
-  }
-  uint64_t m = bits & ((UINT64_C(1) << 52) - 1);
-  if (exponent > 0) m |= UINT64_C(1) << 52;
-  const int b = exponent > 0 ? exponent - 1 : 0, k = b >> 5, shift = b & 31;
-  const uint64_t mask = 0xffffffffu;
-  const uint64_t low = (m & mask) << shift, high = (m >> 32) << shift;
-  // three digits below 2^33 each
-  const int64_t d0 = (int64_t) (low & mask), d1 = (int64_t) ((low >> 32) + (high & mask)),
-                d2 = (int64_t) (high >> 32);
-  if (bits >> 63) {
-    limb[k] -= d0, limb[k + 1] -= d1, limb[k + 2] -= d2;
-  } else {
-    limb[k] += d0, limb[k + 1] += d1, limb[k + 2] += d2;
-  }
-}
-
 /* ---------------------------------------------------------------------- */
 
 void CellExactSum::normalise()

@@ -15,6 +15,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <vector>
 
@@ -26,7 +27,27 @@ namespace LAMMPS_NS {
 class CellExactSum {
  public:
   static constexpr int LIMBS = 70;    // 67 digits of the double range + headroom for carries
-  void add(double x);
+  // x = m 2^(b - 1074), m the 53-bit significand, b = biased exponent - 1 (0 for subnormals): the
+  // digits of m << (b % 32), three below 2^33 each, go to limbs b / 32 and up
+  void add(double x)
+  {
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    const int exponent = (int) ((bits >> 52) & 0x7ff);
+    if (exponent == 0x7ff) {
+      limb[LIMBS]++;
+      return;
+    }
+    const uint64_t m = (bits & ((UINT64_C(1) << 52) - 1)) | ((uint64_t) (exponent > 0) << 52);
+    const int b = exponent > 0 ? exponent - 1 : 0, k = b >> 5, shift = b & 31;
+    const uint64_t mask = 0xffffffffu;
+    const uint64_t low = (m & mask) << shift, high = (m >> 32) << shift;
+    // the sign without a branch: d -> (d ^ s) - s negates d when s = -1
+    const int64_t s = -(int64_t) (bits >> 63);
+    limb[k] += ((int64_t) (low & mask) ^ s) - s;
+    limb[k + 1] += ((int64_t) ((low >> 32) + (high & mask)) ^ s) - s;
+    limb[k + 2] += ((int64_t) (high >> 32) ^ s) - s;
+  }
   // carries propagated: every digit in [0, 2^32) but the top one, which keeps the sign
   void normalise();
   // the sum rounded to double (to about 1 ulp; the same for the same exact sum)
