@@ -13,10 +13,28 @@
 
 using namespace LAMMPS_NS;
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   a bin of exponent e holds n 2^(b - 1074), b = e - 1 (0 for e = 0), |n| < 2^63: its digits
+   n << (b % 32) go to limbs b / 32 and up
+------------------------------------------------------------------------- */
 
-void CellExactSum::normalise()
+void CellExactSum::flush()
 {
+  for (int e = 0; e < 2047; e++) {
+    if (bin[e] == 0) continue;
+    const int b = e > 0 ? e - 1 : 0, k = b >> 5, shift = b & 31;
+    const int64_t s = bin[e] < 0 ? -1 : 0;
+    const uint64_t n = (uint64_t) ((bin[e] ^ s) - s), mask = 0xffffffffu;
+    bin[e] = 0;
+    // |n| in 32-bit digits shifted: below 2^33 each
+    const uint64_t d0 = (n & mask) << shift, d1 = (n >> 32) << shift;
+    const int64_t digits[3] = {(int64_t) (d0 & mask), (int64_t) ((d0 >> 32) + (d1 & mask)),
+                               (int64_t) (d1 >> 32)};
+    for (int j = 0; j < 3; j++) limb[k + j] += (digits[j] ^ s) - s;
+  }
+  limb[LIMBS] += bin[2047];
+  bin[2047] = 0;
+  pending = 0;
   for (int k = 0; k < LIMBS - 1; k++) {
     // floor division by 2^32 (arithmetic shift): the digit stays in [0, 2^32)
     const int64_t carry = limb[k] >> 32;
@@ -27,15 +45,16 @@ void CellExactSum::normalise()
 
 /* ---------------------------------------------------------------------- */
 
-double CellExactSum::value() const
+double CellExactSum::value()
 {
+  flush();
   if (limb[LIMBS]) return NAN;
-  CellExactSum a = *this;
-  a.normalise();
+  CellExactSum a;
+  std::copy(limb, limb + LIMBS + 1, a.limb);
   const bool negative = a.limb[LIMBS - 1] < 0;
   if (negative) {
     for (int k = 0; k < LIMBS; k++) a.limb[k] = -a.limb[k];
-    a.normalise();
+    a.flush();
   }
   int top = LIMBS - 1;
   while (top > 0 && a.limb[top] == 0) top--;
@@ -49,9 +68,15 @@ double CellExactSum::value() const
 
 void CellExactSum::allreduce(CellExactSum *sums, int count, MPI_Comm comm)
 {
-  for (int k = 0; k < count; k++) sums[k].normalise();
-  static_assert(sizeof(CellExactSum) == (LIMBS + 1) * sizeof(int64_t), "packed limbs");
-  MPI_Allreduce(MPI_IN_PLACE, sums, count * (LIMBS + 1), MPI_INT64_T, MPI_SUM, comm);
+  std::vector<int64_t> limbs((size_t) count * (LIMBS + 1));
+  for (int k = 0; k < count; k++) {
+    sums[k].flush();
+    std::copy(sums[k].limb, sums[k].limb + LIMBS + 1, &limbs[(size_t) k * (LIMBS + 1)]);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, limbs.data(), (int) limbs.size(), MPI_INT64_T, MPI_SUM, comm);
+  for (int k = 0; k < count; k++)
+    std::copy(&limbs[(size_t) k * (LIMBS + 1)], &limbs[(size_t) (k + 1) * (LIMBS + 1)],
+              sums[k].limb);
 }
 
 /* ---------------------------------------------------------------------- */

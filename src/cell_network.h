@@ -22,41 +22,39 @@
 namespace LAMMPS_NS {
 
 // the exact sum of doubles as a fixed-point integer of 32-bit digits in int64 limbs over the
-// whole double range (2^-1074 to 2^1024), so that it does not depend on the order of the terms;
-// each limb takes 2^30 terms before it must be carried (normalise())
+// whole double range (2^-1074 to 2^1024), so that it does not depend on the order of the terms.
+// Terms are first summed per binary exponent as integer significands (up to 1024 per exponent),
+// then carried into the limbs
 class CellExactSum {
  public:
   static constexpr int LIMBS = 70;    // 67 digits of the double range + headroom for carries
-  // x = m 2^(b - 1074), m the 53-bit significand, b = biased exponent - 1 (0 for subnormals): the
-  // digits of m << (b % 32), three below 2^33 each, go to limbs b / 32 and up
+  // x = m 2^(b - 1074), m the 53-bit significand, b = biased exponent - 1 (0 for subnormals); the
+  // biased exponent 0x7ff (inf, NaN) counts the non-finite terms
   void add(double x)
   {
     uint64_t bits;
     memcpy(&bits, &x, sizeof bits);
     const int exponent = (int) ((bits >> 52) & 0x7ff);
-    if (exponent == 0x7ff) {
-      limb[LIMBS]++;
-      return;
-    }
-    const uint64_t m = (bits & ((UINT64_C(1) << 52) - 1)) | ((uint64_t) (exponent > 0) << 52);
-    const int b = exponent > 0 ? exponent - 1 : 0, k = b >> 5, shift = b & 31;
-    const uint64_t mask = 0xffffffffu;
-    const uint64_t low = (m & mask) << shift, high = (m >> 32) << shift;
-    // the sign without a branch: d -> (d ^ s) - s negates d when s = -1
+    const int64_t m =
+        (int64_t) ((bits & ((UINT64_C(1) << 52) - 1)) | ((uint64_t) (exponent > 0) << 52));
+    // the sign without a branch: m -> (m ^ s) - s negates m when s = -1
     const int64_t s = -(int64_t) (bits >> 63);
-    limb[k] += ((int64_t) (low & mask) ^ s) - s;
-    limb[k + 1] += ((int64_t) ((low >> 32) + (high & mask)) ^ s) - s;
-    limb[k + 2] += ((int64_t) (high >> 32) ^ s) - s;
+    bin[exponent] += exponent == 0x7ff ? 1 : (m ^ s) - s;
+    if (++pending == 1024) flush();
   }
-  // carries propagated: every digit in [0, 2^32) but the top one, which keeps the sign
-  void normalise();
   // the sum rounded to double (to about 1 ulp; the same for the same exact sum)
-  double value() const;
-  // sums of several CellExactSum over the ranks (normalised first), in place; collective
+  double value();
+  // sums of several CellExactSum over the ranks, in place; collective
   static void allreduce(CellExactSum *sums, int count, MPI_Comm comm);
 
  private:
+  int64_t bin[2048] = {};          // per biased exponent the sum of the signed significands
   int64_t limb[LIMBS + 1] = {};    // the digits, then the count of non-finite terms
+  int pending = 0;                 // terms in the bins
+
+  // the bins into the limbs, the carries propagated: every digit in [0, 2^32) but the top one,
+  // which keeps the sign
+  void flush();
 };
 
 class CellNetwork {
