@@ -20,7 +20,7 @@ using namespace LAMMPS_NS;
 
 void CellExactSum::flush()
 {
-  for (int e = 0; e < 2047; e++) {
+  for (int e = lo; e <= std::min(hi, 2046); e++) {
     if (bin[e] == 0) continue;
     const int b = e > 0 ? e - 1 : 0, k = b >> 5, shift = b & 31;
     const int64_t s = bin[e] < 0 ? -1 : 0;
@@ -35,11 +35,20 @@ void CellExactSum::flush()
   limb[LIMBS] += bin[2047];
   bin[2047] = 0;
   pending = 0;
+  lo = 2047;
+  hi = 0;
+  carry(limb);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellExactSum::carry(int64_t *digits)
+{
   for (int k = 0; k < LIMBS - 1; k++) {
     // floor division by 2^32 (arithmetic shift): the digit stays in [0, 2^32)
-    const int64_t carry = limb[k] >> 32;
-    limb[k] -= carry * (INT64_C(1) << 32);
-    limb[k + 1] += carry;
+    const int64_t up = digits[k] >> 32;
+    digits[k] -= up * (INT64_C(1) << 32);
+    digits[k + 1] += up;
   }
 }
 
@@ -49,18 +58,16 @@ double CellExactSum::value()
 {
   flush();
   if (limb[LIMBS]) return NAN;
-  CellExactSum a;
-  std::copy(limb, limb + LIMBS + 1, a.limb);
-  const bool negative = a.limb[LIMBS - 1] < 0;
-  if (negative) {
-    for (int k = 0; k < LIMBS; k++) a.limb[k] = -a.limb[k];
-    a.flush();
-  }
+  int64_t digits[LIMBS];
+  const bool negative = limb[LIMBS - 1] < 0;
+  // |sum| with its carries propagated again (the digits of a negative sum negated)
+  for (int k = 0; k < LIMBS; k++) digits[k] = negative ? -limb[k] : limb[k];
+  carry(digits);
   int top = LIMBS - 1;
-  while (top > 0 && a.limb[top] == 0) top--;
+  while (top > 0 && digits[top] == 0) top--;
   // the three leading digits (at least 65 bits), weights 2^(32 k - 1074)
   double sum = 0.0;
-  for (int k = top; k >= 0 && k > top - 3; k--) sum += ldexp((double) a.limb[k], 32 * k - 1074);
+  for (int k = top; k >= 0 && k > top - 3; k--) sum += ldexp((double) digits[k], 32 * k - 1074);
   return negative ? -sum : sum;
 }
 

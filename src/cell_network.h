@@ -14,6 +14,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -40,6 +41,8 @@ class CellExactSum {
     // the sign without a branch: m -> (m ^ s) - s negates m when s = -1
     const int64_t s = -(int64_t) (bits >> 63);
     bin[exponent] += exponent == 0x7ff ? 1 : (m ^ s) - s;
+    lo = std::min(lo, exponent);
+    hi = std::max(hi, exponent);
     if (++pending == 1024) flush();
   }
   // the sum rounded to double (to about 1 ulp; the same for the same exact sum)
@@ -51,10 +54,12 @@ class CellExactSum {
   int64_t bin[2048] = {};          // per biased exponent the sum of the signed significands
   int64_t limb[LIMBS + 1] = {};    // the digits, then the count of non-finite terms
   int pending = 0;                 // terms in the bins
+  int lo = 2047, hi = 0;           // the range of bins they may be in
 
-  // the bins into the limbs, the carries propagated: every digit in [0, 2^32) but the top one,
-  // which keeps the sign
+  // the bins into the limbs, the carries propagated
   void flush();
+  // carries propagated: every digit in [0, 2^32) but the top one, which keeps the sign
+  static void carry(int64_t *digits);
 };
 
 class CellNetwork {
