@@ -2,11 +2,15 @@
 // a periodic BCC lattice (each a truncated octahedron, Kelvin's 14-face cell; 8 hexagonal and 6
 // square faces) or a simple cubic one (6 faces), one junction per face, conductances and
 // stiffnesses s spread over a decade each, each cell also exchanging with the outside; the step
-// stiffness dt_w g s is AMP x (1..100) (AMP default 1). Prints a table: cells, junctions, the mean
-// time of a step (set_edges + step: assemble, conjugate gradients, fluxes) over the repeats, its
-// CG iterations, and the water balance |sum of exchange| / gross of the last one.
-// Built and run by bench/network_step.sh.
+// stiffness dt_w g s is AMP x (1..100) (AMP default 1). On any number of MPI ranks, each holding a
+// block of consecutive cells (slabs of the lattice in z) and the junctions that touch them.
+// Prints a table: cells, ranks, junctions, the mean time of a step (set_edges + set_cells + step:
+// halo, assemble, conjugate gradients, fluxes; the slowest rank) over the repeats, its CG
+// iterations, the water balance |sum of exchange| / gross and sum |dM| over the cells of the last
+// one (the same bit for bit on any number of ranks). Built and run by bench/network_step.sh.
 #include "cell_network.h"
+
+#include <mpi.h>
 
 #include <chrono>
 #include <cmath>
@@ -49,50 +53,82 @@ static int lattice(int m, bool bcc, std::vector<CellNetwork::Edge> &edges)
 
 int main(int argc, char **argv)
 {
+  MPI_Init(&argc, &argv);
+  int me, nprocs;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
   const bool bcc = argc < 2 || std::string(argv[1]) != "sc";
   const int repeats = argc > 2 ? atoi(argv[2]) : 20;
   const double amp = argc > 3 ? atof(argv[3]) : 1.0;
+  std::vector<int> sizes;
+  for (int a = 4; a < argc; a++) sizes.push_back(atoi(argv[a]));
+  if (sizes.empty())
+    sizes = bcc ? std::vector<int>{4, 6, 8, 10, 14, 17, 22, 30}
+                : std::vector<int>{5, 8, 10, 14, 22, 28, 38};
   setvbuf(stdout, nullptr, _IONBF, 0);
-  std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> decade(0.0, 1.0);
-  printf("# %s lattice, dt_w g s = %g x (1..100), mean of %d steps\n",
-         bcc ? "bcc (14 faces)" : "sc (6 faces)", amp, repeats);
-  printf("%8s %10s %10s %10s %12s\n", "cells", "junctions", "step_ms", "cg_iter", "net/gross");
-  for (int m : bcc ? std::vector<int>{4, 6, 8, 10, 14, 17, 22, 30}
-                   : std::vector<int>{5, 8, 10, 14, 22, 28, 38}) {
+  if (me == 0) {
+    printf("# %s lattice, dt_w g s = %g x (1..100), mean of %d steps\n",
+           bcc ? "bcc (14 faces)" : "sc (6 faces)", amp, repeats);
+    printf("%8s %6s %10s %10s %10s %12s %24s\n", "cells", "ranks", "junctions", "step_ms",
+           "cg_iter", "net/gross", "sum|dM|");
+  }
+  for (int m : sizes) {
+    std::vector<CellNetwork::Edge> all;
+    const int n = lattice(m, bcc, all);
+    // rank p holds the cells [n p / P, n (p + 1) / P)
+    auto rank_of = [&](int c) { return (int) ((long) c * nprocs / n); };
+    std::vector<int> mine;
+    for (int c = 0; c < n; c++)
+      if (rank_of(c) == me) mine.push_back(c);
     std::vector<CellNetwork::Edge> edges;
-    const int n = lattice(m, bcc, edges);
-    CellNetwork::Cells cells{std::vector<double>(n), std::vector<double>(n),
-                             std::vector<double>(n), std::vector<double>(n)};
-    CellNetwork net;
+    const int nmine = (int) mine.size();
+    CellNetwork::Cells cells{std::vector<double>(nmine), std::vector<double>(nmine),
+                             std::vector<double>(nmine), std::vector<double>(nmine)};
+    CellNetwork net(MPI_COMM_WORLD);
     CellNetwork::Change change;
-    double total = 0.0, balance = 0.0;
+    double total = 0.0, balance = 0.0, sum = 0.0;
     int iterations = 0;
+    // the same random values on every rank count: drawn for all cells, kept for this rank's
+    std::mt19937_64 rng(1);
     for (int r = 0; r < repeats; r++) {
       // values of a tissue: psi -1..0 MPa, s (1e17 Pa/kg) and g over a decade, dt_w = 1 s
-      for (auto &e : edges) e.g = amp * 1e-17 * pow(10.0, decade(rng));
-      for (int c = 0; c < n; c++) {
-        cells.psi[c] = -1e6 * decade(rng);
-        cells.s[c] = 1e17 * pow(10.0, decade(rng));
-        cells.rate[c] = -1e-15 * decade(rng);
-        cells.z[c] = decade(rng);
+      edges.clear();
+      for (auto &e : all) {
+        e.g = amp * 1e-17 * pow(10.0, decade(rng));
+        if (rank_of(e.i) == me || rank_of(e.j) == me) edges.push_back(e);
       }
+      for (int c = 0, h = 0; c < n; c++) {
+        const double psi = -1e6 * decade(rng), s = 1e17 * pow(10.0, decade(rng));
+        const double rate = -1e-15 * decade(rng), z = decade(rng);
+        if (rank_of(c) != me) continue;
+        cells.psi[h] = psi, cells.s[h] = s, cells.rate[h] = rate, cells.z[h] = z;
+        h++;
+      }
+      MPI_Barrier(MPI_COMM_WORLD);
       const auto t0 = std::chrono::steady_clock::now();
-      net.set_edges(n, edges);
-      if (!net.step(1.0, cells, change)) {
-        fprintf(stderr, "network_step: the solve failed at %d cells\n", n);
-        return 1;
-      }
-      const double ms =
+      net.set_edges(mine, edges, rank_of);
+      net.set_cells(cells);
+      const bool ok = net.step(1.0, change);
+      double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      if (!ok) {
+        if (me == 0) fprintf(stderr, "network_step: the solve failed at %d cells\n", n);
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+      MPI_Allreduce(MPI_IN_PLACE, &ms, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
       total += ms;
       iterations += net.iterations();
-      double sum = 0.0;
-      for (double x : change.exchange) sum += x;
-      balance = fabs(sum) / change.gross;
+      balance = fabs(change.net) / change.gross;
+      LAMMPS_NS::CellExactSum dm;
+      for (int h = 0; h < nmine; h++) dm.add(fabs(change.own[h] + change.exchange[h]));
+      LAMMPS_NS::CellExactSum::allreduce(&dm, 1, MPI_COMM_WORLD);
+      sum = dm.value();
     }
-    printf("%8d %10zu %10.3f %10.1f %12.2e\n", n, edges.size(), total / repeats,
-           (double) iterations / repeats, balance);
+    if (me == 0)
+      printf("%8d %6d %10zu %10.3f %10.1f %12.2e %24.17e\n", n, nprocs, all.size(), total / repeats,
+             (double) iterations / repeats, balance, sum);
   }
+  MPI_Finalize();
   return 0;
 }

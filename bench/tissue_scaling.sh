@@ -9,9 +9,11 @@
 # with each row and LAMMPS's "% CPU use" (the share of the wall-clock the ranks got): on a shared
 # machine the rate per CPU second (rate / CPU share) estimates the idle-machine rate, but Open MPI's
 # busy waiting counts as CPU use, so the 2-rank efficiency from it is an upper bound. About 15 minutes on an idle 2-core machine.
-#   bash bench/tissue_scaling.sh [quick|reduce]   (quick: the 27-cell rows and 10^3 cells only;
-#     reduce: the per-cell work only, at n^3 cells for each n of SIZES, default "10 22 46": 10^3,
-#     10^4 and 10^5 cells)
+#   bash bench/tissue_scaling.sh [quick|reduce|exchange]   (quick: the 27-cell rows and 10^3 cells
+#     only; reduce: the per-cell work only, exchange: the same with the water network
+#     (bench/cell_exchange_cost.lmp: the tiny cells joined to their lattice neighbours), at n^3
+#     cells for each n of SIZES, default "10 22 46": 10^3, 10^4 and 10^5 cells; 200 timed steps,
+#     with exchange 2e5/n^3, at least 10)
 # Environment: CELLSPH_BUILD (build folder), OUT (work folder, default /tmp/cellsph-bench/tissue).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -50,7 +52,7 @@ t, p, n, a, mem, cpu = $t, $p, $n, $a, $mem, $cpu
 print(f'| $name | {p} | {\"yes\" if $bal else \"no\"} | {a} | {n} | {t:.1f} | {a*n/t/p:.3g} | {cpu:.0f} | {a*n/t/p/(cpu/100):.3g} | {mem*p*1e6/a/1024:.2f} | $l0 |')"
 }
 
-if [ "$mode" != reduce ]; then
+if [ "$mode" != reduce ] && [ "$mode" != exchange ]; then
 echo "## Tissue: particle-steps per second per core (300 timed steps after 100)"
 echo
 echo "| tissue | ranks | fix balance | particles | steps | loop time (s) | particle-steps/s/core | CPU use (%) | particle-steps per CPU second per rank | memory per particle (kB) | load average at start |"
@@ -65,22 +67,23 @@ for c in "${cases[@]}"; do
 done
 
 fi
-echo
-echo "## fix cell/turgor's per-cell work per step against the number of cells"
-echo
-echo "| cells | ranks | atoms | step without (ms) | step with fix cell/turgor every step (ms) | per-cell work (ms per step) | per cell (us) | load average at start |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|"
-sizes=(10 22)
-[ "$mode" = quick ] && sizes=(10)
-if [ "$mode" = reduce ]; then read -ra sizes <<< "${SIZES:-10 22 46}"; fi
-for n in "${sizes[@]}"; do
-  for np in 1 2; do
-    log=reduce_n${n}_np$np.log
-    cmd=("${lmp[@]}" -in "$here/cell_reduce_cost.lmp" "${vars[@]}" -var n "$n" -log "$log" -screen none)
-    [ "$np" -gt 1 ] && cmd=(mpirun -np "$np" "${cmd[@]}")
-    l0=$(load)
-    "${cmd[@]}" > /dev/null
-    python3 - "$log" "$n" "$np" "$l0" <<'PY'
+cost_table() {   # title input [scaled]: one row per size and rank count
+  echo
+  echo "## $1"
+  echo
+  echo "| cells | ranks | atoms | step without (ms) | step with fix cell/turgor every step (ms) | per-cell work (ms per step) | per cell (us) | load average at start |"
+  echo "|---:|---:|---:|---:|---:|---:|---:|---:|"
+  for n in "${sizes[@]}"; do
+    # scaled: fewer steps for the larger sizes (minutes, not tens of minutes, per row)
+    local nrun=200
+    [ -n "${3:-}" ] && nrun=$((200 * 1000 / (n * n * n) > 10 ? 200 * 1000 / (n * n * n) : 10))
+    for np in 1 2; do
+      local log=$2_n${n}_np$np.log
+      local cmd=("${lmp[@]}" -in "$here/$2.lmp" "${vars[@]}" -var n "$n" -var nrun "$nrun" -log "$log" -screen none)
+      [ "$np" -gt 1 ] && cmd=(mpirun -np "$np" "${cmd[@]}")
+      local l0; l0=$(load)
+      "${cmd[@]}" > /dev/null
+      python3 - "$log" "$n" "$np" "$l0" <<'PY'
 import re, sys
 log, n, np_, l0 = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
 loops = re.findall(r"Loop time of ([0-9.e+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", open(log).read())
@@ -89,5 +92,11 @@ b, w = float(base[0]) / int(base[1]) * 1e3, float(with_fix[0]) / int(with_fix[1]
 cells = n ** 3
 print(f"| {cells} | {np_} | {base[2]} | {b:.3f} | {w:.3f} | {w - b:.3f} | {(w - b) / cells * 1e3:.2f} | {l0} |")
 PY
+    done
   done
-done
+}
+sizes=(10 22)
+[ "$mode" = quick ] && sizes=(10)
+case "$mode" in reduce | exchange) read -ra sizes <<< "${SIZES:-10 22 46}" ;; esac
+[ "$mode" = exchange ] || cost_table "fix cell/turgor's per-cell work per step against the number of cells" cell_reduce_cost
+[ "$mode" = reduce ] || cost_table "fix cell/turgor with exchange (per-cell work and the water network) per step against the number of cells" cell_exchange_cost scaled

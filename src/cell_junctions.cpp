@@ -7,6 +7,7 @@
 #include "atom.h"
 #include "bond.h"
 #include "bond_hybrid.h"
+#include "cell_registry.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -133,16 +134,12 @@ bigint CellJunctions::conducting() const
 
 /* ---------------------------------------------------------------------- */
 
-bool CellJunctions::gather(const std::vector<tagint> &ids, bool recount)
+bool CellJunctions::gather(CellRegistry &registry, bool recount)
 {
   const bigint now = conducting();
   if (!recount && now == counted) return false;
   counted = now;
 
-  auto index = [&](tagint cell) {
-    auto it = std::lower_bound(ids.begin(), ids.end(), cell);
-    return it != ids.end() && *it == cell ? (int) (it - ids.begin()) : -1;
-  };
   const int *num_bond = atom->num_bond;
   int **bond_type = atom->bond_type;
   tagint **bond_atom = atom->bond_atom;
@@ -156,39 +153,48 @@ bool CellJunctions::gather(const std::vector<tagint> &ids, bool recount)
       if (j < 0)
         error->one(FLERR, "{}: junction bond {}-{} has its atom {} missing on this rank", command,
                    tag[i], bond_atom[i][m], bond_atom[i][m]);
-      const int a = index(molecule[i]), b = index(molecule[j]);
+      const int a = registry.index(molecule[i]), b = registry.index(molecule[j]);
       // junctions to cells outside the fix's group carry no water; a same-cell junction is
       // stopped by bond_style cell/lamella at the first force evaluation
       if (a < 0 || b < 0 || a == b) continue;
       mine[{std::min(a, b), std::max(a, b)}]++;
     }
 
-  std::vector<int> send;
-  for (const auto &kv : mine) send.insert(send.end(), {kv.first.first, kv.first.second, kv.second});
-  int nsend = (int) send.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&nsend, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<int> all(displs.back() + counts.back());
-  MPI_Allgatherv(send.data(), nsend, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
-                 world);
+  // each pair's bonds on this rank to the home ranks of its two cells: rows (cell, other, bonds)
+  std::vector<double> rows, got;
+  for (const auto &kv : mine) {
+    const int a = kv.first.first, b = kv.first.second;
+    rows.insert(rows.end(), {(double) a, (double) b, (double) kv.second});
+    if (registry.home(b) != registry.home(a))
+      rows.insert(rows.end(), {(double) b, (double) a, (double) kv.second});
+  }
+  registry.send_home(3, rows, got);
   // a face cut by the rank boundary has bonds on both ranks: integer sums, the same on any layout
   std::map<std::pair<int, int>, int> merged;
-  for (size_t k = 0; k < all.size(); k += 3) merged[{all[k], all[k + 1]}] += all[k + 2];
+  for (size_t k = 0; k < got.size(); k += 3) {
+    const int a = (int) got[k], b = (int) got[k + 1];
+    merged[{std::min(a, b), std::max(a, b)}] += (int) got[k + 2];
+  }
   list.clear();
+  int failed = registry.ncell();
+  std::string message;
   for (const auto &kv : merged) {
     const int a = kv.first.first, b = kv.first.second, bonds = kv.second;
     double per = area;
     if (!areas_file.empty()) {
-      auto it = pair_area.find({ids[a], ids[b]});
-      if (it == pair_area.end())
-        error->all(FLERR,
-                   "{}: junction bonds of type {} join cells {} and {}, which the junction areas "
-                   "file {} does not list",
-                   command, type, ids[a], ids[b], areas_file);
+      auto it = pair_area.find({registry.id(a), registry.id(b)});
+      if (it == pair_area.end()) {
+        if (a < failed)
+          failed = a,
+          message = fmt::format("{}: junction bonds of type {} join cells {} and {}, which the "
+                                "junction areas file {} does not list",
+                                command, type, registry.id(a), registry.id(b), areas_file);
+        continue;
+      }
       per = it->second;
     }
     list.push_back({a, b, bonds, bonds * per});
   }
+  registry.settle(failed, message, {});
   return true;
 }

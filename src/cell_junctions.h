@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    CellJunctions: which cells touch, from the unbroken junction bonds of one bond_style
    cell/lamella type between atoms of two cells, counted once per bond across ranks (newton_bond
-   on or off) and gathered on every rank; each bond stands for the junction area A of its type, or
+   on or off) and sent to the home ranks of the two cells (doc/model.md §5.2); each bond stands for the junction area A of its type, or
    for its pair's contact area over its bonds from a cellgen tissue .junctions file (doc/model.md
    §4.6, §5.13). Used by fix cell/turgor's 'exchange' for the water network.
 ------------------------------------------------------------------------- */
@@ -21,8 +21,8 @@ namespace LAMMPS_NS {
 
 class CellJunctions : protected Pointers {
  public:
-  // cells i < j (indices into the caller's ascending list of cell IDs) joined by this many bonds
-  // through this junction area (m^2)
+  // cells i < j (indices of the registry's cells) joined by this many bonds through this junction
+  // area (m^2)
   struct Junction {
     int i, j, bonds;
     double area;
@@ -34,9 +34,10 @@ class CellJunctions : protected Pointers {
   void init();
   double bond_area() const { return area; }
   int bond_type() const { return type; }
-  // the junctions among the cells ids (ascending); counted again when the number of conducting
-  // bonds changed since the last call (a bond broke), or always with recount; true if counted
-  bool gather(const std::vector<tagint> &ids, bool recount);
+  // the junctions of the registry's home cells on this rank (a junction between cells of two
+  // home ranks on both); counted again when the number of conducting bonds changed since the last
+  // call (a bond broke), or always with recount; true if counted. Collective
+  bool gather(class CellRegistry &registry, bool recount);
   const std::vector<Junction> &junctions() const { return list; }
 
  private:

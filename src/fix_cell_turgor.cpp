@@ -47,9 +47,6 @@ static int restart_globals(int version)
   return version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
 
-// exchange: what the network needs of each cell: psi, dpsi/dM, rate, z, M, K + P_SPH
-static const int NETWORK_VALUES = 6;
-
 /* ---------------------------------------------------------------------- */
 
 FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
@@ -58,7 +55,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), state(lmp),
     physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0),
     exposed_flux(0.0), exposed_area(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
-    exchange_stiffness(0.0)
+    exchange_stiffness(0.0), crossing(0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -187,11 +184,11 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
   if (bondtype) {
     junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
-    network = std::make_unique<CellNetwork>();
+    network = std::make_unique<CellNetwork>(world);
   }
 
   vector_flag = 1;
-  size_vector = 17;
+  size_vector = 18;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -288,8 +285,11 @@ void FixCellTurgor::evaluate(bool transfer)
   const double dtw = cycle.sealed ? 0.0 : accel.value * nevery * update->dt;
   std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
-  // exchange: per home cell psi, dpsi/dM, rate, z, M and K + P_SPH, gathered for the network
-  std::vector<double> mine_net(junctions ? NETWORK_VALUES * home.size() : 0);
+  // exchange: per home cell psi, dpsi/dM, rate and z for the network, M and K + P_SPH
+  const size_t nnet = junctions ? home.size() : 0;
+  CellNetwork::Cells net{std::vector<double>(nnet), std::vector<double>(nnet),
+                         std::vector<double>(nnet), std::vector<double>(nnet)};
+  std::vector<double> net_mass(nnet), net_fluid(nnet);
   max_imbalance = max_stiffness = 0.0;
   failure = Failure{cells->ncell(), ""};
   warnings.clear();
@@ -389,13 +389,12 @@ void FixCellTurgor::evaluate(bool transfer)
     if (cycle.sample) accel.sample(s.probe, cycle, turgor, rate, conductance);
     if (junctions) {
       // advanced with the network below (doc/model.md §5.13)
-      double *v = &mine_net[NETWORK_VALUES * h];
-      v[0] = psi_cell;
-      v[1] = stiffness;
-      v[2] = rate;
-      v[3] = z;
-      v[4] = mass;
-      v[5] = kfluid + cells->sph_turgor(c);
+      net.psi[h] = psi_cell;
+      net.s[h] = stiffness;
+      net.rate[h] = rate;
+      net.z[h] = z;
+      net_mass[h] = mass;
+      net_fluid[h] = kfluid + cells->sph_turgor(c);
       continue;
     }
     if (!transfer) continue;
@@ -436,36 +435,22 @@ void FixCellTurgor::evaluate(bool transfer)
   }
   if (accel.pending) max_stiffness *= accel.begin(first_accel);
   if (junctions) {
-    // every cell's values from its home rank, on every rank (doc/model.md §5.2): the network is
-    // solved on the gathered vectors, each home rank applies its cells' change
-    std::vector<double> all;
-    cells->registry().allgather(NETWORK_VALUES, mine_net, all);
-    const int n = cells->ncell();
-    CellNetwork::Cells net{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
-                           std::vector<double>(n)};
-    std::vector<double> mass(n), fluid(n);
-    for (int c = 0; c < n; c++) {
-      const double *v = &all[NETWORK_VALUES * c];
-      net.psi[c] = v[0];
-      net.s[c] = v[1];
-      net.rate[c] = v[2];
-      net.z[c] = v[3];
-      mass[c] = v[4];
-      fluid[c] = v[5];
-    }
+    // the network on the home ranks: each solves its home cells' rows (doc/model.md §5.2)
     std::vector<double> dmass;
-    exchange(net, fluid, transfer, dtw, arrhenius, dmass);
-    for (int c = 0; c < (int) dmass.size(); c++)
-      if (!(mass[c] + dmass[c] > 0.0))
-        error->all(FLERR,
-                   "Fix cell/turgor: cell {} would lose all its water at step {}: fluid mass M = "
-                   "{} kg, change {} kg with its neighbours (psi_cell = {} Pa, psi_ext = {} Pa)",
-                   cells->id(c), update->ntimestep, mass[c], dmass[c], net.psi[c], psi_ext);
-    for (int h = 0; h < (int) home.size() && !dmass.empty(); h++) {
+    exchange(net, net_fluid, transfer, dtw, arrhenius, dmass);
+    for (int h = 0; h < (int) dmass.size(); h++) {
       const int c = home[h];
-      scale[h] = dmass[c] / mass[c];
-      moved += dmass[c];
+      if (!(net_mass[h] + dmass[h] > 0.0) && failure.cell == cells->ncell())
+        failure = Failure{c,
+                          fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
+                                      "{}: fluid mass M = {} kg, change {} kg with its neighbours "
+                                      "(psi_cell = {} Pa, psi_ext = {} Pa)",
+                                      cells->id(c), update->ntimestep, net_mass[h], dmass[h],
+                                      net.psi[h], psi_ext)};
+      scale[h] = dmass[h] / net_mass[h];
+      moved += dmass[h];
     }
+    if (transfer) cells->registry().settle(failure.cell, failure.message, {});
   }
   if (!transfer) return;
 
@@ -501,8 +486,9 @@ void FixCellTurgor::evaluate(bool transfer)
 void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid,
                              bool transfer, double dtw, double factor, std::vector<double> &dmass)
 {
-  const int n = cells->ncell();
-  junctions->gather(cells->registry().cell_ids(), !transfer);
+  CellRegistry &registry = cells->registry();
+  const std::vector<int> &home = registry.home_cells();
+  const bool counted = junctions->gather(registry, !transfer);
   const double l = lcc.get(lmp);
   if (!(l >= 0.0))
     error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 (step {})",
@@ -511,32 +497,35 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<dou
   // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13)
   const double g = rhow * l * factor;
   for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, g * j.area});
-  network->set_edges(n, std::move(edges));
-  for (int c = 0; c < n; c++)
-    if (!(in.s[c] > 0.0))
-      error->all(
-          FLERR,
-          "Fix cell/turgor: cell {} cannot exchange water: its water potential does not rise "
-          "with its water, dpsi/dM = {} Pa/kg (K + P_SPH = {} Pa)",
-          cells->id(c), in.s[c], fluid[c]);
-  exchange_stiffness = network->stiffness(dtw, in.s);
+  network->set_edges(home, edges, [&](int c) { return registry.home(c); });
+  if (counted) {
+    const int mine = network->crossing();
+    MPI_Allreduce(&mine, &crossing, 1, MPI_INT, MPI_SUM, world);
+  }
+  for (int h = 0; h < (int) home.size() && failure.cell == cells->ncell(); h++)
+    if (!(in.s[h] > 0.0))
+      failure = Failure{home[h],
+                        fmt::format("Fix cell/turgor: cell {} cannot exchange water: its water "
+                                    "potential does not rise with its water, dpsi/dM = {} Pa/kg "
+                                    "(K + P_SPH = {} Pa)",
+                                    cells->id(home[h]), in.s[h], fluid[h])};
+  registry.settle(failure.cell, failure.message, {});
+  network->set_cells(in);
+  exchange_stiffness = network->stiffness(dtw);
   std::vector<double> rate;
-  network->rates(in.psi, rate);
-  for (int c : cells->home_cells()) state[cells->id(c)].rate += rate[c];
+  network->rates(rate);
+  for (int h = 0; h < (int) home.size(); h++) state[cells->id(home[h])].rate += rate[h];
   if (!transfer) return;
 
   CellNetwork::Change change;
-  if (!network->step(dtw, in, change))
+  if (!network->step(dtw, change))
     error->all(
         FLERR,
         "Fix cell/turgor: the water network's solver did not converge at step {} ({} iterations)",
         update->ntimestep, network->iterations());
-  dmass.resize(n);
-  exchange_net = 0.0;
-  for (int c = 0; c < n; c++) {
-    dmass[c] = change.own[c] + change.exchange[c];
-    exchange_net += change.exchange[c];
-  }
+  dmass.resize(home.size());
+  for (int h = 0; h < (int) home.size(); h++) dmass[h] = change.own[h] + change.exchange[h];
+  exchange_net = change.net;
   water_exchanged += change.gross;
 }
 
@@ -684,7 +673,8 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
    11 water moved between cells (kg), 12 the exchange's net mass change at the last transfer (kg,
    0 to round-off), 13 max dt_w g_ij (s_i + s_j) over junctions, 14 the most cells one rank
    summed at the last evaluation, 15 the surface temperature of the air drive (K), 16 the mean
-   vapour flux over the exposed area (kg m^-2 s^-1), 17 the exposed area (m^2)
+   vapour flux over the exposed area (kg m^-2 s^-1), 17 the exposed area (m^2), 18 junctions
+   between cells of different home ranks
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
@@ -695,7 +685,7 @@ double FixCellTurgor::compute_vector(int n)
       drive.mass_transfer, accel.value,     accel.lag_estimate,
       accel.lag_error,     water_exchanged, exchange_net,
       exchange_stiffness,  busiest,         drive.kind == CellDrive::AIR ? drive.temperature : 0.0,
-      exposed_flux,        exposed_area};
+      exposed_flux,        exposed_area,    (double) crossing};
   return values[n];
 }
 
