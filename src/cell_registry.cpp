@@ -45,6 +45,14 @@ void CellRegistry::find_cells()
   if (ids.empty())
     error->all(FLERR, "{}: group {} has no atoms with a molecule (cell) ID > 0", command,
                group_name);
+  // index() by a table where the IDs are dense (cellgen numbers its cells 1 to N), else by a
+  // binary search
+  dense.clear();
+  const tagint span = ids.back() - ids.front() + 1;
+  if (span <= 4 * (tagint) ids.size()) {
+    dense.assign(span, -1);
+    for (int c = 0; c < (int) ids.size(); c++) dense[ids[c] - ids.front()] = c;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -113,6 +121,10 @@ void CellRegistry::map_atoms()
 
 int CellRegistry::index(tagint molecule) const
 {
+  if (!dense.empty()) {
+    const tagint k = molecule - ids.front();
+    return k >= 0 && k < (tagint) dense.size() ? dense[k] : -1;
+  }
   auto it = std::lower_bound(ids.begin(), ids.end(), molecule);
   return (it != ids.end() && *it == molecule) ? (int) (it - ids.begin()) : -1;
 }

@@ -79,6 +79,7 @@ class CellRegistry : protected Pointers {
   std::string command, group_name;
   int groupbit;
   std::vector<tagint> ids;            // cell (molecule) IDs, ascending
+  std::vector<int> dense;             // index of ID ids[0] + k, -1 if none; empty: IDs sparse
   std::vector<int> homes;             // home rank of each cell
   std::vector<int> mine, homeslot;    // home cells of this rank, slot of each cell among them
   std::vector<double> ref;            // reference point of each cell (unwrapped), 3 per cell
