@@ -215,7 +215,8 @@ void CellNetwork::rates(std::vector<double> &rate) const
   rate.assign(nown, 0.0);
   for (int c = 0; c < nown; c++)
     // J_ij = rho_w L_cc A_ij (psi_j - psi_i) into cell i (doc/model.md §5.13)
-    for (int k = start[c]; k < start[c + 1]; k++) rate[c] += cond[k] * (psi[other[k]] - psi[c]);
+    for (int k = start[c]; k < start[c + 1]; k++)
+      rate[c] += scale * cond[k] * (psi[other[k]] - psi[c]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -226,7 +227,7 @@ double CellNetwork::stiffness(double dtw) const
   // two cells relax psi_j - psi_i at the rate g (s_i + s_j) (doc/model.md §5.13)
   for (int c = 0; c < nown; c++)
     for (int k = start[c]; k < start[c + 1]; k++)
-      most = std::max(most, dtw * cond[k] * (s[c] + s[other[k]]));
+      most = std::max(most, dtw * scale * cond[k] * (s[c] + s[other[k]]));
   MPI_Allreduce(&most, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   return all;
 }
@@ -257,7 +258,7 @@ bool CellNetwork::step(double dtw, Change &change)
     b[c] = dtw * state.rate[c];
     for (int k = start[c]; k < start[c + 1]; k++) {
       const int j = other[k];
-      const double a = dtw * cond[k];
+      const double a = dtw * scale * cond[k];
       // + dt_w g_ij (psi_j - psi_i) on the right, dt_w g_ij s_i on the diagonal
       b[c] += a * (psi[j] - psi[c]);
       diag[c] += a * s[c];
@@ -336,8 +337,8 @@ bool CellNetwork::step(double dtw, Change &change)
       const int j = other[k];
       const bool lower = global[c] < global[j];
       // dM_ij = dt_w g_ij (psi_j - psi_i) at the end of the step, i < j: + to i, - to j
-      const double moved = lower ? dtw * cond[k] * (psi_end[j] - psi_end[c])
-                                 : dtw * cond[k] * (psi_end[c] - psi_end[j]);
+      const double moved = lower ? dtw * scale * cond[k] * (psi_end[j] - psi_end[c])
+                                 : dtw * scale * cond[k] * (psi_end[c] - psi_end[j]);
       change.exchange[c] += lower ? moved : -moved;
       if (lower) sums[0].add(fabs(moved));
     }

@@ -94,6 +94,9 @@ class CellNetwork {
   // them (a junction between two ranks' cells given to both) and the rank of any cell. Collective
   void set_edges(const std::vector<int> &cells, const std::vector<Edge> &edges,
                  const std::function<int(int)> &rank_of);
+  // a factor on every junction's g for the calls below (e.g. L_cc(T) of this step, the edges
+  // carrying rho_w A_ij), so that the junctions' set-up is kept from one step to the next
+  void set_scale(double factor) { scale = factor; }
   // the cells' state for the calls below; halo values from their ranks. Collective
   void set_cells(const Cells &cells);
   // water flowing into each cell of this rank from its neighbours at the current psi (kg/s)
@@ -110,6 +113,7 @@ class CellNetwork {
  private:
   MPI_Comm world;
   int nown = 0, ntotal = 0, last_iterations = 0, cross = 0;
+  double scale = 1.0;         // the factor on every g (set_scale)
   std::vector<int> global;    // global index of each own cell, then of each halo cell
   // per own cell (CSR: start) its junctions, ordered by the other cell's global index: the other
   // cell (local index: own or halo) and g

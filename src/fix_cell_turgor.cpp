@@ -222,6 +222,7 @@ void FixCellTurgor::init()
   drive.init();
   lcc.resolve(lmp, "Fix cell/turgor: variable");
   if (junctions) junctions->init();
+  network_stale = true;
   kfluid = bulk > 0.0 ? bulk : pair_bulk_modulus();
 
   gt0.clear();
@@ -493,15 +494,17 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<dou
   if (!(l >= 0.0))
     error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 (step {})",
                l, update->ntimestep);
-  std::vector<CellNetwork::Edge> edges;
-  // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13)
-  const double g = rhow * l * factor;
-  for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, g * j.area});
-  network->set_edges(home, edges, [&](int c) { return registry.home(c); });
-  if (counted) {
+  // the junctions set up again when they were counted again or the home ranks changed (init)
+  if (counted || network_stale) {
+    std::vector<CellNetwork::Edge> edges;
+    for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, rhow * j.area});
+    network->set_edges(home, edges, [&](int c) { return registry.home(c); });
     const int mine = network->crossing();
     MPI_Allreduce(&mine, &crossing, 1, MPI_INT, MPI_SUM, world);
+    network_stale = false;
   }
+  // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13): rho_w A_ij on the edges, L_cc(T) here
+  network->set_scale(l * factor);
   for (int h = 0; h < (int) home.size() && failure.cell == cells->ncell(); h++)
     if (!(in.s[h] > 0.0))
       failure = Failure{home[h],

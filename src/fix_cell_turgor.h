@@ -89,6 +89,7 @@ class FixCellTurgor : public Fix {
   double exchange_net;          // sum over cells of the exchange's mass change, last transfer (kg)
   double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
   int crossing;    // junctions between cells of different home ranks, at the last count
+  bool network_stale = true;    // the network's junctions to set up again (new home ranks)
 
   void evaluate(bool transfer);
   void exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid, bool transfer,
