@@ -184,11 +184,12 @@ bool CellJunctions::gather(CellRegistry &registry, bool recount)
     if (!areas_file.empty()) {
       auto it = pair_area.find({registry.id(a), registry.id(b)});
       if (it == pair_area.end()) {
-        if (a < failed)
-          failed = a,
+        if (a < failed) {
+          failed = a;
           message = fmt::format("{}: junction bonds of type {} join cells {} and {}, which the "
                                 "junction areas file {} does not list",
                                 command, type, registry.id(a), registry.id(b), areas_file);
+        }
         continue;
       }
       per = it->second;

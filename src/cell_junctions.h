@@ -2,9 +2,10 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    CellJunctions: which cells touch, from the unbroken junction bonds of one bond_style
    cell/lamella type between atoms of two cells, counted once per bond across ranks (newton_bond
-   on or off) and sent to the home ranks of the two cells (doc/model.md §5.2); each bond stands for the junction area A of its type, or
-   for its pair's contact area over its bonds from a cellgen tissue .junctions file (doc/model.md
-   §4.6, §5.13). Used by fix cell/turgor's 'exchange' for the water network.
+   on or off) and sent to the home ranks of the two cells (doc/model.md §5.2); each bond stands
+   for the junction area A of its type, or for its pair's contact area over its bonds from a
+   cellgen tissue .junctions file (doc/model.md §4.6, §5.13). Used by fix cell/turgor's
+   'exchange' for the water network.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_JUNCTIONS_H

@@ -86,15 +86,6 @@ void CellExactSum::allreduce(CellExactSum *sums, int count, MPI_Comm comm)
               sums[k].limb);
 }
 
-/* ---------------------------------------------------------------------- */
-
-void CellNetwork::set_edges(int ncell, const std::vector<Edge> &edges)
-{
-  std::vector<int> cells(ncell);
-  for (int c = 0; c < ncell; c++) cells[c] = c;
-  set_edges(cells, edges, [](int) { return 0; });
-}
-
 /* ----------------------------------------------------------------------
    local indices: own cells in the given order, then the halo ordered by (rank, global index), so
    that the cells a rank sends (its own cells joined to the receiver's, ascending) arrive in the

@@ -88,8 +88,6 @@ class CellNetwork {
 
   explicit CellNetwork(MPI_Comm comm = MPI_COMM_SELF) : world(comm) {}
 
-  // one rank: cells 0 to ncell - 1 and their junctions
-  void set_edges(int ncell, const std::vector<Edge> &edges);
   // this rank's cells (global indices, ascending), the junctions with at least one end among
   // them (a junction between two ranks' cells given to both) and the rank of any cell. Collective
   void set_edges(const std::vector<int> &cells, const std::vector<Edge> &edges,

@@ -286,11 +286,11 @@ void FixCellTurgor::evaluate(bool transfer)
   const double dtw = cycle.sealed ? 0.0 : accel.value * nevery * update->dt;
   std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
-  // exchange: per home cell psi, dpsi/dM, rate and z for the network, M and K + P_SPH
+  // exchange: per home cell psi, dpsi/dM, rate and z for the network, and M
   const size_t nnet = junctions ? home.size() : 0;
   CellNetwork::Cells net{std::vector<double>(nnet), std::vector<double>(nnet),
                          std::vector<double>(nnet), std::vector<double>(nnet)};
-  std::vector<double> net_mass(nnet), net_fluid(nnet);
+  std::vector<double> net_mass(nnet);
   max_imbalance = max_stiffness = 0.0;
   failure = Failure{cells->ncell(), ""};
   warnings.clear();
@@ -389,13 +389,20 @@ void FixCellTurgor::evaluate(bool transfer)
           std::min(first_accel, accel.first(conductance, slope, modulus(c), mass, offset_time()));
     if (cycle.sample) accel.sample(s.probe, cycle, turgor, rate, conductance);
     if (junctions) {
-      // advanced with the network below (doc/model.md §5.13)
+      // advanced with the network below (doc/model.md §5.13), which needs psi to rise with M
+      if (!(stiffness > 0.0)) {
+        failure = Failure{c,
+                          fmt::format("Fix cell/turgor: cell {} cannot exchange water: its water "
+                                      "potential does not rise with its water, dpsi/dM = {} Pa/kg "
+                                      "(K + P_SPH = {} Pa)",
+                                      id, stiffness, kfluid + cells->sph_turgor(c))};
+        break;
+      }
       net.psi[h] = psi_cell;
       net.s[h] = stiffness;
       net.rate[h] = rate;
       net.z[h] = z;
       net_mass[h] = mass;
-      net_fluid[h] = kfluid + cells->sph_turgor(c);
       continue;
     }
     if (!transfer) continue;
@@ -438,7 +445,7 @@ void FixCellTurgor::evaluate(bool transfer)
   if (junctions) {
     // the network on the home ranks: each solves its home cells' rows (doc/model.md §5.2)
     std::vector<double> dmass;
-    exchange(net, net_fluid, transfer, dtw, arrhenius, dmass);
+    exchange(net, transfer, dtw, arrhenius, dmass);
     for (int h = 0; h < (int) dmass.size(); h++) {
       const int c = home[h];
       if (!(net_mass[h] + dmass[h] > 0.0) && failure.cell == cells->ncell())
@@ -484,8 +491,8 @@ void FixCellTurgor::evaluate(bool transfer)
    area per bond (the bond type's A, or the pair's from a junction areas file).
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid,
-                             bool transfer, double dtw, double factor, std::vector<double> &dmass)
+void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
+                             std::vector<double> &dmass)
 {
   CellRegistry &registry = cells->registry();
   const std::vector<int> &home = registry.home_cells();
@@ -505,14 +512,6 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, const std::vector<dou
   }
   // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13): rho_w A_ij on the edges, L_cc(T) here
   network->set_scale(l * factor);
-  for (int h = 0; h < (int) home.size() && failure.cell == cells->ncell(); h++)
-    if (!(in.s[h] > 0.0))
-      failure = Failure{home[h],
-                        fmt::format("Fix cell/turgor: cell {} cannot exchange water: its water "
-                                    "potential does not rise with its water, dpsi/dM = {} Pa/kg "
-                                    "(K + P_SPH = {} Pa)",
-                                    cells->id(home[h]), in.s[h], fluid[h])};
-  registry.settle(failure.cell, failure.message, {});
   network->set_cells(in);
   exchange_stiffness = network->stiffness(dtw);
   std::vector<double> rate;

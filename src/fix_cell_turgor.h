@@ -92,8 +92,8 @@ class FixCellTurgor : public Fix {
   bool network_stale = true;    // the network's junctions to set up again (new home ranks)
 
   void evaluate(bool transfer);
-  void exchange(const CellNetwork::Cells &in, const std::vector<double> &fluid, bool transfer,
-                double dtw, double factor, std::vector<double> &dmass);
+  void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
+                std::vector<double> &dmass);
   double modulus(int c) const;
   double offset_time() const;
   bool check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi, double demand);
