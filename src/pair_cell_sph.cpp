@@ -38,8 +38,8 @@ using namespace LAMMPS_NS;
 
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
-// wall boundary's adhesion W per type pair
-static const int RESTART_VERSION = 8;
+// wall boundary's adhesion W per type pair; 8: grow; 9: background
+static const int RESTART_VERSION = 9;
 static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
@@ -82,7 +82,7 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
     hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
     tensile(0.0), tensile_n(4), tensile_dp(0.0), stress(nullptr), pairw(nullptr), pairwj(nullptr),
-    pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
+    background(0.0), pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
     viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
     hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
     boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
@@ -148,6 +148,7 @@ void PairCellSPH::compute(int eflag, int vflag)
       (shift > 0.0 && !gradc) || (tensile > 0.0 && !stress);
   if (grown) grow_peratom();
   if (temp_set) update_viscosity();
+  if (background_in.is_variable()) update_background();
 
   if (walls) {
     if (neighbor->ago == 0 || grown) {
@@ -190,7 +191,7 @@ void PairCellSPH::compute(int eflag, int vflag)
   for (int i = atom->nlocal; i < nall; i++)
     if (fluid[type[i]]) {
       rhoinv[i] = 1.0 / rho[i];
-      prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i];
+      prho2[i] = (pressure[i] + background) * rhoinv[i] * rhoinv[i];
       if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
       if (peratom) prho2[i] /= omega[i];
       if (adhering && hmode == HADAPTIVE) prho2[i] += adhp[i];
@@ -243,7 +244,9 @@ void PairCellSPH::artificial_stress()
   const double support = CellKernel::support(kernel);
   for (int i = 0; i < nall; i++) {
     const int t = type[i];
-    if (!fluid[t] || !(pressure[i] < 0.0)) {
+    // with a background pressure the force's pressure is P_b + P_i
+    const double pforce = pressure[i] + background;
+    if (!fluid[t] || !(pforce < 0.0)) {
       stress[i] = 0.0;
       continue;
     }
@@ -263,7 +266,7 @@ void PairCellSPH::artificial_stress()
     }
     // R_i = eps |P_i| / rho_i^2 (doc/pair_cell_sph.md, eq. T1), divided by f(dp_i/h_i)^n
     const double wdp = CellKernel::W(kernel, CellKernel::Scale{1.0 / hi, 1.0, 1.0}, dp);
-    stress[i] = -tensile * pressure[i] / (rho[i] * rho[i] * power_n(wdp, tensile_n));
+    stress[i] = -tensile * pforce / (rho[i] * rho[i] * power_n(wdp, tensile_n));
   }
 }
 
@@ -1070,8 +1073,67 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
       }
     }
   }
+  if (background > 0.0) outside_pressure<EVFLAG>();
   for (int i = 0; i < nall; i++)
     for (int d = 0; d < 3; d++) f[i][d] += wallload[i][d];
+}
+
+/* ----------------------------------------------------------------------
+   background pressure P_b from outside on every wall triangle kept by an owned wall atom b:
+   -P_b S_T / 3 on each vertex (S_T the outward area vector), energy P_b V_T,
+   V_T = x_b . S_T / 3 with x_b unwrapped (the closed wall's volume by the divergence theorem),
+   tallied as wall load so that the load is the fluid's P alone (doc/pair_cell_sph.md, eq. B2)
+------------------------------------------------------------------------- */
+
+template <int EVFLAG> void PairCellSPH::outside_pressure()
+{
+  double **x = atom->x;
+  const int nlocal = atom->nlocal;
+  const double p3 = background / 3.0;
+  for (int b = 0; b < nlocal; b++) {
+    const int t0 = tris->first(b), nt = tris->count(b);
+    for (int t = t0; t < t0 + nt; t++) {
+      const int a = tris->a(t), c = tris->c(t);
+      if (a < 0 || c < 0)
+        error->one(FLERR,
+                   "Pair cell/sph: background pressure: a wall triangle of atom {} (cell {}) has "
+                   "a vertex on no rank on step {} (ghost cutoff too short)",
+                   atom->tag[b], atom->molecule[b], update->ntimestep);
+      // S_T = (x_b - x_a) x (x_c - x_a) / 2, outward; -P_b dV/dx_k = -P_b S_T / 3 (eq. B2)
+      double ab[3], ac[3], fn[3];
+      for (int d = 0; d < 3; d++) {
+        ab[d] = x[b][d] - x[a][d];
+        ac[d] = x[c][d] - x[a][d];
+      }
+      fn[0] = -0.5 * p3 * (ab[1] * ac[2] - ab[2] * ac[1]);
+      fn[1] = -0.5 * p3 * (ab[2] * ac[0] - ab[0] * ac[2]);
+      fn[2] = -0.5 * p3 * (ab[0] * ac[1] - ab[1] * ac[0]);
+      const int v[3] = {a, b, c};
+      for (int k = 0; k < 3; k++)
+        for (int d = 0; d < 3; d++) wallload[v[k]][d] += fn[d];
+      if (!EVFLAG) continue;
+      if (eflag_either) {
+        // P_b V_T = -x_b . F_k (F_k = -P_b S_T / 3), x_b unwrapped
+        double xb[3];
+        domain->unmap(x[b], atom->image[b], xb);
+        const double e = -(xb[0] * fn[0] + xb[1] * fn[1] + xb[2] * fn[2]);
+        if (eflag_global) eng_vdwl += e;
+        if (eflag_atom) eatom[b] += e;
+      }
+      if (vflag_either) {
+        // virial sum_k x_k F_k (as F dot r over owned and ghost atoms)
+        for (int k = 0; k < 3; k++) {
+          const double *xk = x[v[k]];
+          const double w[6] = {xk[0] * fn[0], xk[1] * fn[1], xk[2] * fn[2],
+                               xk[0] * fn[1], xk[0] * fn[2], xk[1] * fn[2]};
+          for (int m = 0; m < 6; m++) {
+            if (vflag_global) virial[m] += w[m];
+            if (vflag_atom) vatom[v[k]][m] += w[m];
+          }
+        }
+      }
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -1231,9 +1293,11 @@ void PairCellSPH::apply_eos()
     }
     if (!(x > 0.0 && x <= 2.0) || !std::isfinite(pressure[i])) unstable(i);
     rhoinv[i] = 1.0 / rho[i];
+    // background pressure: P_b + P, e gains P_b (1/rho0 - 1/rho) (doc/pair_cell_sph.md, eq. B1)
+    if (eflag_either) e += background * (invrho0[t] - rhoinv[i]);
     // P / (rho^2 gamma Omega): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2
     // without walls at fixed h)
-    prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / (gamma * omega);
+    prho2[i] = (pressure[i] + background) * rhoinv[i] * rhoinv[i] / (gamma * omega);
     if (adhering) {
       const double a = adhesion_a(i);
       // E_a = -a_f (1 - gamma_f) (doc/pair_cell_sph.md, eq. A1)
@@ -1361,7 +1425,8 @@ void PairCellSPH::allocate()
 /* ----------------------------------------------------------------------
    pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [eos linear|tait]
                        [h fixed|mass <eta>|adaptive <eta>] [temp <T>] [Tref <T0>]
-                       [shift <A>] [tensile <eps> [n <n>] [dp <length>]] [grow <g>]
+                       [shift <A>] [tensile <eps> [n <n>] [dp <length>]] [background <P_b>]
+                       [grow <g>]
 ------------------------------------------------------------------------- */
 
 // the range of the Vogel correlation of the viscosity of water
@@ -1386,6 +1451,8 @@ void PairCellSPH::settings(int narg, char **arg)
   tensile = 0.0;
   tensile_n = 4;
   tensile_dp = 0.0;
+  background_in = CellQuantity();
+  background = 0.0;
   grow = GROW;
   // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
   // (h mode, tensile)
@@ -1464,6 +1531,11 @@ void PairCellSPH::settings(int narg, char **arg)
         }
         iarg += 2;
       }
+    } else if (strcmp(arg[iarg], "background") == 0) {
+      background_in = CellQuantity::parse(lmp, arg[iarg + 1], "Pair style cell/sph: background");
+      background = background_in.value;
+      if (!(background >= 0.0))
+        error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa must be >= 0", background);
     } else if (strcmp(arg[iarg], "grow") == 0) {
       grow = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(grow > 1.0)) error->all(FLERR, "Pair style cell/sph: grow = {} must be > 1", grow);
@@ -1484,7 +1556,7 @@ void PairCellSPH::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos', "
-                 "'h', 'temp', 'Tref', 'shift', 'tensile' or 'grow')",
+                 "'h', 'temp', 'Tref', 'shift', 'tensile', 'background' or 'grow')",
                  arg[iarg]);
     }
     iarg += 2;
@@ -1628,6 +1700,16 @@ void PairCellSPH::init_style()
   for (int i = 1; i <= n; i++)
     hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : run_hcap(i);
   walls = has_wall_boundary() ? 1 : 0;
+  if (background_in.is_variable())
+    background_in.resolve(lmp, "Pair style cell/sph: background variable");
+  if ((background > 0.0 || background_in.is_variable()) && !walls) {
+    const std::string pb =
+        background_in.is_variable() ? "v_" + background_in.name : fmt::format("{} Pa", background);
+    error->all(FLERR,
+               "Pair cell/sph: background P_b = {} needs the wall boundary (pair_coeff I J wall), "
+               "whose triangles carry P_b from outside",
+               pb);
+  }
   adhering = 0;
   for (int i = 1; i <= n; i++) adhk[i] = 0.0;    // set by wetting()
   if (walls) {
@@ -1811,6 +1893,17 @@ double PairCellSPH::init_one(int i, int j)
    liquid water (doc/model.md §5.9); T evaluated once per step (a variable may change it)
 ------------------------------------------------------------------------- */
 
+void PairCellSPH::update_background()
+{
+  background = background_in.get(lmp);
+  if (!(background >= 0.0))
+    error->all(FLERR,
+               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} must be >= 0",
+               background, background_in.name, update->ntimestep);
+}
+
+/* ---------------------------------------------------------------------- */
+
 void PairCellSPH::update_viscosity()
 {
   const double t = temp.get(lmp);
@@ -1911,6 +2004,11 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&tensile_dp, sizeof(double), 1, fp);
   // version 8: grow
   fwrite(&grow, sizeof(double), 1, fp);
+  // version 9: background (number, variable name)
+  fwrite(&background_in.value, sizeof(double), 1, fp);
+  const int blen = static_cast<int>(background_in.name.size());
+  fwrite(&blen, sizeof(int), 1, fp);
+  if (blen > 0) fwrite(background_in.name.data(), sizeof(char), blen, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1963,6 +2061,16 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   grow = GROW;
   if (comm->me == 0 && restart_version >= 8)
     utils::sfread(FLERR, &grow, sizeof(double), 1, fp, nullptr, error);
+  // background from version 9 on; older files had none
+  background_in = CellQuantity();
+  int blen = 0;
+  std::vector<char> bname;
+  if (comm->me == 0 && restart_version >= 9) {
+    utils::sfread(FLERR, &background_in.value, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &blen, sizeof(int), 1, fp, nullptr, error);
+    bname.resize(blen);
+    if (blen > 0) utils::sfread(FLERR, bname.data(), sizeof(char), blen, fp, nullptr, error);
+  }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -1978,6 +2086,12 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&tensile_n, 1, MPI_INT, 0, world);
   MPI_Bcast(&tensile_dp, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&grow, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&background_in.value, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&blen, 1, MPI_INT, 0, world);
+  bname.resize(blen);
+  if (blen > 0) MPI_Bcast(bname.data(), blen, MPI_CHAR, 0, world);
+  background_in.name.assign(bname.begin(), bname.end());
+  background = background_in.value;
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);
@@ -2040,7 +2154,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
     for (int k : {i, j})
       if (r < support * hv[k]) {
         const CellKernel::Scale sk = CellKernel::scale(kernel, domain->dimension, hv[k]);
-        double pk = pressure[k] / (omega[k] * rho[k] * rho[k]);
+        double pk = (pressure[k] + background) / (omega[k] * rho[k] * rho[k]);
         if (tensile > 0.0)
           pk += stress[k] * power_n(CellKernel::W(kernel, {sk.invh, 1.0, 1.0}, r), tensile_n);
         fforce -= atom->rmass[i] * atom->rmass[j] * pk * CellKernel::dWr(kernel, sk, r);
@@ -2049,7 +2163,8 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   }
   // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (doc/model.md §3.4)
   const double r = sqrt(rsq);
-  double pij = pressure[i] / (rho[i] * rho[i]) + pressure[j] / (rho[j] * rho[j]);
+  double pij = (pressure[i] + background) / (rho[i] * rho[i]) +
+      (pressure[j] + background) / (rho[j] * rho[j]);
   // the artificial stress (doc/pair_cell_sph.md, eq. T2)
   if (tensile > 0.0)
     pij += (stress[i] + stress[j]) *

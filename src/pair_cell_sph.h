@@ -81,6 +81,14 @@ class PairCellSPH : public Pair {
   double *pairwj;       // per-atom h with tensile: f(r_ij/h_j)
   void artificial_stress();
 
+  // background pressure (pair_style keyword background P_b): the fluid's forces use P_b + P, and
+  // every wall triangle of a cell with the wall boundary carries P_b from outside, so the wall
+  // feels P alone (doc/pair_cell_sph.md, background pressure)
+  CellQuantity background_in;    // P_b (Pa): a number or an equal-style variable
+  double background;             // P_b of this step (Pa), 0 = off
+  void update_background();
+  template <int EVFLAG> void outside_pressure();
+
   struct PairConst {
     double cutsq;               // (kernel support)^2; 0 if the pair is not computed
     CellKernel::Scale scale;    // kernel constants at this pair's h (the fluid's for a boundary)

@@ -6,9 +6,10 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 8 in
+  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 9 in
                                                the layout of version 5 (no tensile eps, n, dp; no
-                                               wall adhesion W per type pair; no grow)
+                                               wall adhesion W per type pair; no grow; no
+                                               background)
   restart_version.py IN OUT older cell/bending the dihedral cell/bending payload of version 2 in
                                                the layout of version 1 (no form per type)
 
@@ -95,10 +96,15 @@ def sph_to_version5(data, at, version):
     payload whose marker is at offset at: after the marker, kernel eos (int), cutoff (double),
     hmode (int), eta (double), temp flag (int), T, Tref (double), name length (int), name, shift
     (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
-    setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp."""
+    setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp;
+    version 9: also the background P_b (double), its variable name's length (int) and name."""
     (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
-    del data[start:start + 8 + 4 + 8 + (8 if version >= 8 else 0)]
+    end = start + 8 + 4 + 8 + (8 if version >= 8 else 0)
+    if version >= 9:
+        (blen,) = struct.unpack_from("=i", data, end + 8)
+        end += 8 + 4 + blen
+    del data[start:end]
     if version >= 7:
         n = header_count(data, 16, 17, "NTYPES")
         pos = start
@@ -126,8 +132,8 @@ def main():
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
-            if version not in (6, 7, 8):
-                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 8")
+            if version not in (6, 7, 8, 9):
+                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 9")
             sph_to_version5(data, at, version)
             print(f"restart_version.py: {style} payload version {version} -> 5")
         elif style == "cell/bending" and mode == "older":
