@@ -2,12 +2,15 @@
 # The fluid in tension in the drying scene (examples/drying/in.drying, 70 C): the clumping (share
 # of fluid atoms with another within dx/2, dx = (M/(rho0 N))^(1/3): examples/drying/analyse.py)
 # at X/X0 = 0.6, 0.4, 0.2 and the section descriptors at X/X0 = 0.5 and 0.2 against the
-# resolution, with and without the artificial stress of pair cell/sph (the scene's tensile 0.2
-# against -var tensile 0), for the walls given (default 312 642 1092; 0.03 s of physical time per
-# step), each run by bench/drying_error.sh (one LAMMPS run per point, NP ranks, default 1, with its
-# CPU time). MODES="on off" (default) chooses the variants; WORK=dir keeps and reuses the runs
-# (WORK/on, WORK/off). Prints the clumping table, then drying_error.sh's table per variant (the
-# first wall given is its reference).
+# resolution, for the walls given (default 312 642 1092; 0.03 s of physical time per step), each
+# run by bench/drying_error.sh (one LAMMPS run per point, NP ranks, default 1, with its CPU time).
+# MODES chooses the ways of holding the fluid in tension (default "background wells"):
+#   background  the scene: pair cell/sph background 3e5 from the drying on, no adhesion
+#   wells       the scene before: pair cell/wall's adhesion wells and the artificial stress
+#               tensile 0.2 (-var background 0 -var adhmode cellwall -var tensile 0.2)
+#   bare        the wells without the artificial stress (... -var tensile 0)
+# WORK=dir keeps and reuses the runs (WORK/<mode>). Prints the clumping table, then
+# drying_error.sh's table per mode (the first wall given is its reference).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 work=${WORK:-$(mktemp -d)}
@@ -16,19 +19,24 @@ walls=("$@")
 points=()
 for w in "${walls[@]}"; do points+=("$w 0.03"); done
 export NP=${NP:-1}
-for mode in ${MODES:-on off}; do
+modes=${MODES:-background wells}
+for mode in $modes; do
   mkdir -p "$work/$mode"
-  vars=""
-  [ "$mode" = on ] || vars="-var tensile 0"
+  case $mode in
+    background) vars="" ;;
+    wells) vars="-var background 0 -var adhmode cellwall -var tensile 0.2" ;;
+    bare) vars="-var background 0 -var adhmode cellwall -var tensile 0" ;;
+    *) echo "unknown mode $mode" >&2 && exit 1 ;;
+  esac
   WORK=$work/$mode LMPVARS=$vars bash "$here/drying_error.sh" "${points[@]}" >"$work/$mode/table.txt"
 done
 cd "$work"
-WORKDIR=$work HERE=$here/.. MODES=${MODES:-on off} python3 - "${walls[@]}" <<'PY'
+WORKDIR=$work HERE=$here/.. MODES=$modes python3 - "${walls[@]}" <<'PY'
 import os
 import sys
 sys.path.insert(0, os.path.join(os.environ["HERE"], "examples", "drying"))
 import analyse
-print("| wall | tensile | within dx/2 at X/X0 0.6 | 0.4 | 0.2 (end) | wall atoms held at the end | CPU (s) |")
+print("| wall | mode | within dx/2 at X/X0 0.6 | 0.4 | 0.2 (end) | wall atoms held at the end | CPU (s) |")
 print("|---|---|---|---|---|---|---|")
 for w in sys.argv[1:]:
     for mode in os.environ["MODES"].split():
@@ -45,11 +53,11 @@ for w in sys.argv[1:]:
         vals = [share(x) for x in (0.6, 0.4)] + [st[-1]]
         with open(f"wall_{tag}.txt") as f:
             cpu = f.read().split("/")[-1].strip()
-        print(f"| {w} | {'0.2' if mode == 'on' else '0'} | "
+        print(f"| {w} | {mode} | "
               + " | ".join(f"{s[4]:.3f} ({s[1]:.2f})" for s in vals) + f" | {st[-1][5]:.3f} | {cpu} |")
 PY
-for mode in ${MODES:-on off}; do
-  echo "tensile $mode:"
+for mode in $modes; do
+  echo "$mode:"
   cat "$work/$mode/table.txt"
 done
 echo "runs in $work"

@@ -90,11 +90,15 @@ def stability(tag, reach, rs):
 
 
 def reach_of(tag):
-    """the adhesion's reach rc = h/2.5 + well h from the run's log"""
+    """the reach of the protoplast on the wall from the run's log: the adhesion's rc = h/2.5 +
+    well h, or without an adhesion h/2.5 + 0.45 h (the scene's former well) of the fluid's h"""
     with open(f"log.{tag}") as f:
-        m = re.search(r"pair_coeff 1 2 cell/wall adhesion [0-9.eE+-]+ [0-9.eE+-]+ [0-9.eE+-]+ ([0-9.eE+-]+)",
-                      f.read())
-    return float(m.group(1))
+        log = f.read()
+    m = re.search(r"pair_coeff 1 2 cell/wall adhesion [0-9.eE+-]+ [0-9.eE+-]+ [0-9.eE+-]+ ([0-9.eE+-]+)", log)
+    if m:
+        return float(m.group(1))
+    h = float(re.search(r"pair_coeff\s+1 1 cell/sph [0-9.eE+-]+ [0-9.eE+-]+ [0-9.eE+-]+ ([0-9.eE+-]+)", log).group(1))
+    return h / 2.5 + 0.45 * h
 
 
 def first_line(path, default="n/a"):
@@ -157,7 +161,7 @@ def main(tags):
               f"water density): nearest-neighbour distance at the start min {st[0][2]:.2f} dx, mean "
               f"{st[0][3]:.2f} dx; at the end min {st[-1][2]:.2f} dx, mean {st[-1][3]:.2f} dx; share of "
               f"fluid atoms within dx/2 of another at most {max(x[4] for x in st):.3f} (at the end "
-              f"{st[-1][4]:.3f}); share of wall atoms with fluid within the adhesion reach at least "
+              f"{st[-1][4]:.3f}); share of wall atoms with fluid within h/2.5 + 0.45 h at least "
               f"{min(x[5] for x in st):.3f} (at the end {st[-1][5]:.3f})")
 
 
