@@ -82,11 +82,12 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
     hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
     tensile(0.0), tensile_n(4), tensile_dp(0.0), stress(nullptr), pairw(nullptr), pairwj(nullptr),
-    background(0.0), pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr),
-    viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr),
-    hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
-    adhesion(nullptr), adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
+    background(0.0), background_auto(0), background_min(0.0), pc(nullptr), wself(nullptr),
+    invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1),
+    ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
+    dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), wallsupport(0.0),
+    gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr), adhk(nullptr), adhering(0),
+    adhp(nullptr), planeint(0.0), wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr),
     refreshing(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr),
@@ -1073,7 +1074,7 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
       }
     }
   }
-  if (background > 0.0) outside_pressure<EVFLAG>();
+  if (background != 0.0) outside_pressure<EVFLAG>();
   for (int i = 0; i < nall; i++)
     for (int d = 0; d < 3; d++) f[i][d] += wallload[i][d];
 }
@@ -1260,6 +1261,7 @@ void PairCellSPH::apply_eos()
   const int *type = atom->type;
   const int inum = list->inum;
   const int *ilist = list->ilist;
+  double volume[2] = {0.0, 0.0};    // this rank's sum m/rho and sum P m/rho over fluid atoms
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -1293,11 +1295,11 @@ void PairCellSPH::apply_eos()
     }
     if (!(x > 0.0 && x <= 2.0) || !std::isfinite(pressure[i])) unstable(i);
     rhoinv[i] = 1.0 / rho[i];
-    // background pressure: P_b + P, e gains P_b (1/rho0 - 1/rho) (doc/pair_cell_sph.md, eq. B1)
-    if (eflag_either) e += background * (invrho0[t] - rhoinv[i]);
     // P / (rho^2 gamma Omega): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2
-    // without walls at fixed h)
-    prho2[i] = (pressure[i] + background) * rhoinv[i] * rhoinv[i] / (gamma * omega);
+    // without walls at fixed h); the background pressure is added below
+    prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / (gamma * omega);
+    volume[0] += rmass[i] * rhoinv[i];
+    volume[1] += pressure[i] * rmass[i] * rhoinv[i];
     if (adhering) {
       const double a = adhesion_a(i);
       // E_a = -a_f (1 - gamma_f) (doc/pair_cell_sph.md, eq. A1)
@@ -1312,6 +1314,26 @@ void PairCellSPH::apply_eos()
     }
     if (eflag_global) eng_vdwl += rmass[i] * e;
     if (eflag_atom) eatom[i] += rmass[i] * e;
+  }
+  if (background_auto) {
+    // P_b = P_min - the fluid's volume-weighted mean pressure sum P m/rho / sum m/rho (eq. B3)
+    double sum[2];
+    MPI_Allreduce(volume, sum, 2, MPI_DOUBLE, MPI_SUM, world);
+    background = background_min - (sum[0] > 0.0 ? sum[1] / sum[0] : 0.0);
+  }
+  if (background == 0.0) return;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int t = type[i];
+    if (!fluid[t]) continue;
+    const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    const double omega = hmode == HADAPTIVE ? atom->dvector[iomega][i] : 1.0;
+    // P_b + P in the forces; e gains P_b (1/rho0 - 1/rho) (doc/pair_cell_sph.md, eq. B1)
+    prho2[i] += background * rhoinv[i] * rhoinv[i] / (gamma * omega);
+    if (!eflag_either) continue;
+    const double e = rmass[i] * background * (invrho0[t] - rhoinv[i]);
+    if (eflag_global) eng_vdwl += e;
+    if (eflag_atom) eatom[i] += e;
   }
 }
 
@@ -1453,6 +1475,8 @@ void PairCellSPH::settings(int narg, char **arg)
   tensile_dp = 0.0;
   background_in = CellQuantity();
   background = 0.0;
+  background_auto = 0;
+  background_min = 0.0;
   grow = GROW;
   // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
   // (h mode, tensile)
@@ -1532,10 +1556,22 @@ void PairCellSPH::settings(int narg, char **arg)
         iarg += 2;
       }
     } else if (strcmp(arg[iarg], "background") == 0) {
-      background_in = CellQuantity::parse(lmp, arg[iarg + 1], "Pair style cell/sph: background");
-      background = background_in.value;
-      if (!(background >= 0.0))
-        error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa must be >= 0", background);
+      if (value == "auto") {
+        if (iarg + 2 >= narg)
+          error->all(FLERR, "Pair style cell/sph: 'background auto' needs a value P_min (Pa)");
+        background_auto = 1;
+        background_min = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+        if (!(background_min >= 0.0))
+          error->all(FLERR, "Pair style cell/sph: background auto P_min = {} Pa must be >= 0",
+                     background_min);
+        iarg++;
+      } else {
+        background_in = CellQuantity::parse(lmp, arg[iarg + 1], "Pair style cell/sph: background");
+        background = background_in.value;
+        if (!std::isfinite(background))
+          error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa is not a number",
+                     background);
+      }
     } else if (strcmp(arg[iarg], "grow") == 0) {
       grow = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(grow > 1.0)) error->all(FLERR, "Pair style cell/sph: grow = {} must be > 1", grow);
@@ -1702,9 +1738,10 @@ void PairCellSPH::init_style()
   walls = has_wall_boundary() ? 1 : 0;
   if (background_in.is_variable())
     background_in.resolve(lmp, "Pair style cell/sph: background variable");
-  if ((background > 0.0 || background_in.is_variable()) && !walls) {
-    const std::string pb =
-        background_in.is_variable() ? "v_" + background_in.name : fmt::format("{} Pa", background);
+  if ((background != 0.0 || background_in.is_variable() || background_auto) && !walls) {
+    const std::string pb = background_auto ? fmt::format("auto {} Pa", background_min)
+        : background_in.is_variable()      ? "v_" + background_in.name
+                                           : fmt::format("{} Pa", background);
     error->all(FLERR,
                "Pair cell/sph: background P_b = {} needs the wall boundary (pair_coeff I J wall), "
                "whose triangles carry P_b from outside",
@@ -1896,9 +1933,10 @@ double PairCellSPH::init_one(int i, int j)
 void PairCellSPH::update_background()
 {
   background = background_in.get(lmp);
-  if (!(background >= 0.0))
+  if (!std::isfinite(background))
     error->all(FLERR,
-               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} must be >= 0",
+               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} is not a "
+               "number",
                background, background_in.name, update->ntimestep);
 }
 
@@ -2004,11 +2042,13 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&tensile_dp, sizeof(double), 1, fp);
   // version 8: grow
   fwrite(&grow, sizeof(double), 1, fp);
-  // version 9: background (number, variable name)
+  // version 9: background (number, variable name, auto flag, P_min)
   fwrite(&background_in.value, sizeof(double), 1, fp);
   const int blen = static_cast<int>(background_in.name.size());
   fwrite(&blen, sizeof(int), 1, fp);
   if (blen > 0) fwrite(background_in.name.data(), sizeof(char), blen, fp);
+  fwrite(&background_auto, sizeof(int), 1, fp);
+  fwrite(&background_min, sizeof(double), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2063,6 +2103,8 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &grow, sizeof(double), 1, fp, nullptr, error);
   // background from version 9 on; older files had none
   background_in = CellQuantity();
+  background_auto = 0;
+  background_min = 0.0;
   int blen = 0;
   std::vector<char> bname;
   if (comm->me == 0 && restart_version >= 9) {
@@ -2070,6 +2112,8 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &blen, sizeof(int), 1, fp, nullptr, error);
     bname.resize(blen);
     if (blen > 0) utils::sfread(FLERR, bname.data(), sizeof(char), blen, fp, nullptr, error);
+    utils::sfread(FLERR, &background_auto, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &background_min, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
@@ -2092,6 +2136,8 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   if (blen > 0) MPI_Bcast(bname.data(), blen, MPI_CHAR, 0, world);
   background_in.name.assign(bname.begin(), bname.end());
   background = background_in.value;
+  MPI_Bcast(&background_auto, 1, MPI_INT, 0, world);
+  MPI_Bcast(&background_min, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);

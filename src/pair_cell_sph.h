@@ -86,6 +86,8 @@ class PairCellSPH : public Pair {
   // feels P alone (doc/pair_cell_sph.md, background pressure)
   CellQuantity background_in;    // P_b (Pa): a number or an equal-style variable
   double background;             // P_b of this step (Pa), 0 = off
+  int background_auto;           // background auto P_min: P_b = P_min - the fluid's mean P
+  double background_min;         // P_min (Pa)
   void update_background();
   template <int EVFLAG> void outside_pressure();
 
