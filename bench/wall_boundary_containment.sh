@@ -8,6 +8,8 @@
 # cellgen's default gap. Prints the number of fluid atoms outside the wall (winding
 # number, compute cell/props column 16), the volume, the fluid-free volume and the pressures.
 # About 15 minutes on 2 free cores. `bench/wall_boundary_containment.sh 312 1092` runs some.
+# MODES (default "inflate shrink"): also shrinkbg, shrunk to 0.35 x without adhesion, the fluid
+# held by pair cell/sph background 3e5 (doc/pair_cell_sph.md, background pressure).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -18,13 +20,19 @@ export LAMMPS_POTENTIALS=$here/../potentials
 source "$here/scaled_cell.sh"
 declare -A NFLUID=([312]=450 [1092]=1624 [2562]=3900 [5762]=8800 [10242]=15600)
 for want in ${*:-312 1092 2562 5762 10242}; do
-  for mode in inflate shrink; do
+  for mode in ${MODES:-inflate shrink}; do
     dir="$work/$want-$mode"
     mkdir -p "$dir" && cd "$dir"
     scaled_cell "$want" "${NFLUID[$want]}"    # the wall-wall contact follows the wall spacing
-    if [ "$mode" = inflate ]; then f=1.35 adh=0; else f=0.35 adh=1; fi
+    popt="kernel wendland"
+    case $mode in
+      inflate) f=1.35 adh=0 ;;
+      shrink) f=0.35 adh=1 ;;
+      shrinkbg) f=0.35 adh=0 popt="kernel wendland background 3e5" ;;
+      *) echo "unknown mode $mode" >&2 && exit 1 ;;
+    esac
     t0=$SECONDS
-    result=$(mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd 1 -var adh "$adh" -var ws "$ws" \
+    result=$(mpirun -np 2 "$build/bin/lmp" -in "$here/wall_boundary.lmp" -var bnd 1 -var adh "$adh" -var ws "$ws" -var popt "$popt" \
       -var f "$f" -var h "$h" -var dt "$dt" -var gap "$gap" -var nrelax 20000 -log log.lammps |
       grep RESULT || echo "RESULT failed: $(grep -m1 ERROR log.lammps)")
     echo "$nwall wall, $nfluid fluid, $mode: ${result#RESULT } ($((SECONDS - t0)) s)"
