@@ -7,7 +7,9 @@
 # per atom: mass (h = 1.27 (m/rho0)^(1/3)) and adaptive (h = 1.27 (m/rho)^(1/3)), and fixed at
 # the adaptive run's mean h (boundary-h14: 14.3 um, the cost of h adaptive at equal h).
 #   bash bench/cell_model_speed.sh [nsteps=5000] [repeats=3] [models="particles boundary"]
-#   (models also: mass adaptive boundary-h14)
+#   (models also: mass adaptive boundary-h14 auto; auto: the boundary with pair cell/sph
+#   background auto 5e4 in the timed run; 5e3 and 2e4 lost wall atoms in these undamped
+#   dynamics, doc/pair_cell_sph.md)
 # Prints particle-steps per second per core of the timed run (best of the repeats). Environment:
 # CELLSPH_BUILD (build folder), MPIEXEC (default mpirun), OUT (work folder), NPS (rank counts,
 # default "1 2").
@@ -22,8 +24,9 @@ if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_
 mkdir -p "$out"
 cd "$out"
 for model in $models; do
-hmode=fixed hfix=12.2e-6
+hmode=fixed hfix=12.2e-6 bg=-1
 case $model in
+  auto) bnd=1 gap=4.79885e-6 bg=5e4 ;;
   particles) bnd=0 gap=11e-6 ;;
   boundary) bnd=1 gap=4.79885e-6 ;;
   boundary-h14) bnd=1 gap=4.79885e-6 hfix=14.3e-6 ;;
@@ -39,7 +42,7 @@ for np in ${NPS:-1 2}; do
   for r in $(seq "$repeats"); do
     log=log.$model.np$np.$r
     if [ "$np" = 1 ]; then cmd=("$build/bin/lmp"); else cmd=("${MPIEXEC:-mpirun}" -np "$np" "$build/bin/lmp"); fi
-    "${cmd[@]}" -in "$here/cell_model_speed.lmp" -var nsteps "$nsteps" -var bnd "$bnd" -var gap "$gap" -var hmode "$hmode" -var hfix "$hfix" \
+    "${cmd[@]}" -in "$here/cell_model_speed.lmp" -var nsteps "$nsteps" -var bnd "$bnd" -var gap "$gap" -var hmode "$hmode" -var hfix "$hfix" -var bg "$bg" \
       -log "$log" >/dev/null
     # the timed run is the last "Loop time" line
     t=$(awk '/^Loop time of/ { t = $4; n = $9; a = $12 } END { print t }' "$log")
