@@ -1930,18 +1930,6 @@ double PairCellSPH::init_one(int i, int j)
    liquid water (doc/model.md §5.9); T evaluated once per step (a variable may change it)
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::update_background()
-{
-  background = background_in.get(lmp);
-  if (!std::isfinite(background))
-    error->all(FLERR,
-               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} is not a "
-               "number",
-               background, background_in.name, update->ntimestep);
-}
-
-/* ---------------------------------------------------------------------- */
-
 void PairCellSPH::update_viscosity()
 {
   const double t = temp.get(lmp);
@@ -1961,6 +1949,21 @@ void PairCellSPH::update_viscosity()
     for (int j = i; j <= n; j++)
       if (setflag[i][j] && !pc[i][j].boundary)
         pc[i][j].mu2 = pc[j][i].mu2 = 2.0 * mu[i][j] * muscale;
+}
+
+/* ----------------------------------------------------------------------
+   background P_b from its equal-style variable, evaluated once per step (doc/pair_cell_sph.md,
+   background pressure)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::update_background()
+{
+  background = background_in.get(lmp);
+  if (!std::isfinite(background))
+    error->all(FLERR,
+               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} is not a "
+               "number",
+               background, background_in.name, update->ntimestep);
 }
 
 /* ---------------------------------------------------------------------- */
