@@ -49,10 +49,23 @@ ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
         plane = PLANE_Z;
       else if (value == "principal")
         plane = PLANE_PRINCIPAL;
-      else
+      else if (value == "normal") {
+        if (iarg + 4 >= narg)
+          error->all(FLERR, "Compute cell/shape: plane normal needs three components nx ny nz");
+        plane = PLANE_NORMAL;
+        for (int d = 0; d < 3; d++)
+          normal[d] = utils::numeric(FLERR, arg[iarg + 2 + d], false, lmp);
+        const double len =
+            sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        if (!(len > 0.0) || !std::isfinite(len))
+          error->all(FLERR, "Compute cell/shape: plane normal {} {} {} has no direction",
+                     arg[iarg + 2], arg[iarg + 3], arg[iarg + 4]);
+        for (double &c : normal) c /= len;
+        iarg += 3;
+      } else
         error->all(FLERR,
-                   "Compute cell/shape: plane = {} is not a section plane (expected x, y, z or "
-                   "principal)",
+                   "Compute cell/shape: plane = {} is not a section plane (expected x, y, z, "
+                   "principal or normal nx ny nz)",
                    value);
     } else if (strcmp(arg[iarg], "offset") == 0)
       offset = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -203,6 +216,14 @@ void ComputeCellShape::measure(int h, double *row)
     int big = 0;
     n.cwiseAbs().maxCoeff(&big);
     if (n[big] < 0.0) n = -n;
+    e2 = n.cross(e1);
+  } else if (plane == PLANE_NORMAL) {
+    // e1 along the part of the coordinate axis least aligned with n that is normal to n
+    n = Eigen::Vector3d(normal[0], normal[1], normal[2]);
+    int least = 0;
+    n.cwiseAbs().minCoeff(&least);
+    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(least);
+    e1 = (axis - axis.dot(n) * n).normalized();
     e2 = n.cross(e1);
   } else {
     const int k = plane - PLANE_X;

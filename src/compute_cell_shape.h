@@ -47,10 +47,11 @@ class ComputeCellShape : public Compute {
   };
 
  private:
-  enum { PLANE_X, PLANE_Y, PLANE_Z, PLANE_PRINCIPAL };
+  enum { PLANE_X, PLANE_Y, PLANE_Z, PLANE_PRINCIPAL, PLANE_NORMAL };
   std::unique_ptr<CellReduce> cells;
   std::unique_ptr<CellTriangles> walls;    // the wall triangles of this rank's home cells
   int plane;
+  double normal[3] = {0.0, 0.0, 1.0};    // plane normal: the unit normal
   double offset;
   std::vector<double> mine, rows, all;    // this rank's triangles, home cells' rows, every row
   std::vector<tagint> corners;
