@@ -11,7 +11,9 @@
 #   P_T / P_off - 1.
 # The law: P = 2 G t0 / R0 (1/lambda - lambda^-7) of bond cell/neohookean (G 18 MPa, t0 1 um, R0
 # 75 um; it peaks at 298 kPa at lambda = 7^(1/6) = 1.38). Env: CASES (coarse seed), F ("1.03 1.14
-# 1.95"), ADHW (0.5), HMODE (fixed), NP (2), NRAMP (10000), NRELAX (30000).
+# 1.95"), ADHW (0.5), HMODE (fixed), NP (2), NRAMP (10000), NRELAX (30000), MODES ("off on"; also
+# auto: no adhesion, the relaxation with pair cell/sph background auto RPB (default 5e3 Pa), what
+# keeps the fluid on a slack wall in examples/drying; 'off' must come first).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -42,15 +44,16 @@ for case in ${CASES:-coarse seed}; do
   esac
   for f in ${F:-1.03 1.14 1.95}; do
     poff=
-    for mode in off on; do
+    for mode in ${MODES:-off on}; do
       mkdir -p "$work/$case-$f-$mode" && cd "$work/$case-$f-$mode"
       scaled_cell "$nw" "$nf"
-      adh=2
+      adh=2 rpb=-1
       if [ $mode = off ]; then adh=0; fi
+      if [ $mode = auto ]; then adh=0 rpb=${RPB:-5e3}; fi
       t0=$SECONDS
       line=$(nice -n 10 mpirun -np "${NP:-2}" "$build/bin/lmp" -in "$here/wall_boundary.lmp" \
         -var bnd 1 -var f "$f" -var h "$h" -var dt "$dt" -var gap "$gap" -var ws "$ws" \
-        -var hmode "$hmode" -var hcap 1.5 -var adh $adh -var adhw "$adhw" \
+        -var hmode "$hmode" -var hcap 1.5 -var adh $adh -var adhw "$adhw" -var rpb "$rpb" \
         -var nramp "${NRAMP:-10000}" -var nrelax "${NRELAX:-30000}" -log log.lammps | grep '^RESULT')
       pt=$(sed -E 's/.* P_wall ([-0-9.e+]+) .*/\1/' <<<"$line")
       lam=$(sed -E 's/.* lam ([-0-9.e+]+) .*/\1/' <<<"$line")
