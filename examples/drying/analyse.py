@@ -17,6 +17,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from lammps_dump import positions, snapshots  # noqa: E402
+from section_planes import at_x, mean_se, relative, x_by_step  # noqa: E402
 
 # columns of dry_TAG.dat (in.drying)
 COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid "
@@ -121,7 +122,8 @@ def wall_time(tag):
 
 def main(tags):
     print("drying of one turgid apple cell in air, RH 0.15 (in.drying); values relative to the turgid cell")
-    print("section: plane z through the volume centroid (compute cell/shape)")
+    print("section: plane z through the volume centroid (compute cell/shape); sections x, y, z; and the "
+          "mean of 13 planes (tools/section_planes.lmp) +- its standard error")
     for tag in tags:
         rs = rows(tag)
         r0, half, end = rs[0], at(rs, 0.5), rs[-1]
@@ -141,6 +143,22 @@ def main(tags):
                       f"   {end[key + 'x']:.3f} {end[key + 'y']:.3f} {end[key]:.3f}")
             else:
                 print(f"  {name:16s}  {half[key]:8.3f}  {end[key]:6.3f}   {ref}")
+        try:
+            series, xs = relative(f"sections_{tag}.dat"), x_by_step(f"log.{tag}")
+        except OSError:
+            series = None
+        if series:
+            # the 13-plane means per snapshot (planes_TAG.txt, for the figure) and at 0.5 and the end
+            with open(f"planes_{tag}.txt", "w") as f:
+                f.write("# X/X0 then the mean over 13 planes of A/A0 P/P0 F/F0 (tools/section_planes.lmp)\n")
+                for step, a, p, fe in series:
+                    if step in xs:
+                        f.write("%.6f %.6f %.6f %.6f\n" % (xs[step], *(mean_se(v)[0] for v in (a, p, fe))))
+            mid, fin = at_x(series, xs, 0.5), at_x(series, xs, end["X"])
+            for k, (key, name) in enumerate((("A", "section area"), ("P", "perimeter"), ("F", "Feret"))):
+                if mid and fin:
+                    (hm, hs, _), (em, es, _) = mean_se(mid[k]), mean_se(fin[k])
+                    print(f"  {name:16s}  {hm:.3f}±{hs:.3f}  {em:.3f}±{es:.3f}   {APPLE[key]:.2f}   13 planes")
         for key, name in (("round", "roundness"), ("elong", "elongation"), ("compact", "compactness")):
             print(f"  {name:16s}  {half[key] / r0[key]:8.3f}  {end[key] / r0[key]:6.3f}   "
                   f"{'1.05' if key != 'compact' else '1.00'}  (relative to the start)")

@@ -21,7 +21,8 @@ elong=${ELONG:-}    # ELONG=1.45: start from a prolate cell of that elongation (
 out=$here/out
 mkdir -p "$out"
 cd "$out"
-rm -f dry_*.dat final_*.txt tlp_*.txt wall_*.dump pic_*.png fig_*.png summary.txt intersections_*.txt
+rm -f dry_*.dat final_*.txt tlp_*.txt wall_*.dump pic_*.png fig_*.png summary.txt intersections_*.txt \
+  sections_*.dat planes_*.txt
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
 if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -56,6 +57,9 @@ for run in "${runs[@]}"; do
   stamp "$1: $(grep '^dried' "$1.screen") [$(($(date +%s) - t0)) s]"
   python3 "$here/../../tools/wall_self_intersection.py" cell.data "wall_$1.dump" --quiet --out "intersections_$1.txt" ||
     echo "[drying] $1: the wall passed through itself (intersections_$1.txt)"
+  # the section descriptors over 13 planes of every wall snapshot (LAMMPS rerun, a few seconds)
+  "$build/bin/lmp" -in "$here/../../tools/section_planes.lmp" -var data cell.data -var dump "wall_$1.dump" \
+    -var out "sections_$1.dat" -log "log.sections_$1" >/dev/null
 done
 
 python3 "$here/analyse.py" T70 T40 >summary.txt
@@ -82,17 +86,21 @@ set xrange [1:0]
 set yrange [0:1.6]
 set ylabel 'relative to the turgid cell'
 set key bottom left
-set title 'section area (z; thin: x, y)'
+set title 'section area (z; thin: x, y; dashed: mean of 13 planes)'
 plot 'dry_T70.dat' using 2:8 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:8 with lines lw 2 title '40 C', \
-     'dry_T70.dat' using 2:21 with lines lw 1 lc 1 notitle, 'dry_T70.dat' using 2:24 with lines lw 1 lc 1 notitle, '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
+     'dry_T70.dat' using 2:21 with lines lw 1 lc 1 notitle, 'dry_T70.dat' using 2:24 with lines lw 1 lc 1 notitle, \
+     'planes_T70.txt' using 1:2 with lines dt 2 lw 3 lc 1 title '70 C, 13 planes', 'planes_T40.txt' using 1:2 with lines dt 2 lw 3 lc 2 title '40 C, 13 planes', \
+     '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -60 %'
 0.2 0.4
 e
-set title 'perimeter'
-plot 'dry_T70.dat' using 2:9 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:9 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -30 %'
+set title 'perimeter (z; dashed: mean of 13 planes)'
+plot 'dry_T70.dat' using 2:9 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:9 with lines lw 2 title '40 C', \
+     'planes_T70.txt' using 1:3 with lines dt 2 lw 3 lc 1 notitle, 'planes_T40.txt' using 1:3 with lines dt 2 lw 3 lc 2 notitle, '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -30 %'
 0.2 0.7
 e
-set title 'Feret diameter'
-plot 'dry_T70.dat' using 2:10 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:10 with lines lw 2 title '40 C', '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -40 %'
+set title 'Feret diameter (z; dashed: mean of 13 planes)'
+plot 'dry_T70.dat' using 2:10 with lines lw 2 title '70 C', 'dry_T40.dat' using 2:10 with lines lw 2 title '40 C', \
+     'planes_T70.txt' using 1:4 with lines dt 2 lw 3 lc 1 notitle, 'planes_T40.txt' using 1:4 with lines dt 2 lw 3 lc 2 notitle, '-' using 1:2 with points pt 2 ps 3 lw 3 lc rgb 'black' title 'apple, dried: -40 %'
 0.2 0.6
 e
 set title 'volume (wall-enclosed) and wrinkling'
