@@ -6,7 +6,7 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 9 in
+  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 10 in
                                                the layout of version 5 (no tensile eps, n, dp; no
                                                wall adhesion W per type pair; no grow; no
                                                background)
@@ -98,13 +98,16 @@ def sph_to_version5(data, at, version):
     (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
     setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp;
     version 9: also the background P_b (double), its variable name's length (int) and name, the
-    auto flag (int) and P_min (double)."""
+    auto flag (int) and P_min (double); version 10: also the auto lag (double), P_b (double) and
+    its step (bigint, 8 bytes)."""
     (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
     end = start + 8 + 4 + 8 + (8 if version >= 8 else 0)
     if version >= 9:
         (blen,) = struct.unpack_from("=i", data, end + 8)
         end += 8 + 4 + blen + 4 + 8
+    if version >= 10:
+        end += 8 + 8 + 8
     del data[start:end]
     if version >= 7:
         n = header_count(data, 16, 17, "NTYPES")
@@ -133,8 +136,8 @@ def main():
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
-            if version not in (6, 7, 8, 9):
-                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 9")
+            if version not in (6, 7, 8, 9, 10):
+                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 10")
             sph_to_version5(data, at, version)
             print(f"restart_version.py: {style} payload version {version} -> 5")
         elif style == "cell/bending" and mode == "older":
