@@ -38,7 +38,7 @@ using namespace LAMMPS_NS;
 
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
-// wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag and state
+// wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag
 static const int RESTART_VERSION = 10;
 static const double TREF_DEFAULT = 298.15;
 
@@ -85,12 +85,12 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
     hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
     tensile(0.0), tensile_n(4), tensile_dp(0.0), stress(nullptr), pairw(nullptr), pairwj(nullptr),
-    background(0.0), background_auto(0), background_min(0.0), background_lag(-1.0),
-    background_step(-1), pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr),
-    fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1),
-    hcap(nullptr), hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
-    adhesion(nullptr), adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
+    background(0.0), background_auto(0), background_min(0.0), background_lag(-1.0), pc(nullptr),
+    wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0},
+    irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
+    dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), wallsupport(0.0),
+    gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr), adhk(nullptr), adhering(0),
+    adhp(nullptr), planeint(0.0), wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr),
     refreshing(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr),
@@ -1323,14 +1323,13 @@ void PairCellSPH::apply_eos()
     double sum[2];
     MPI_Allreduce(volume, sum, 2, MPI_DOUBLE, MPI_SUM, world);
     const double target = background_min - (sum[0] > 0.0 ? sum[1] / sum[0] : 0.0);
-    // P_b relaxes to it over the lag time, once per step (a run's setup on the same step keeps
-    // it); the first value is the target itself (eq. B4)
+    // P_b relaxes to it over the lag time, a step at a time; a run's setup takes the target
+    // itself, whatever changed between runs (eq. B4)
     const double lag = background_lag >= 0.0 ? background_lag : AUTO_LAG * update->dt;
-    if (background_step < 0 || lag == 0.0)
+    if (update->setupflag || lag == 0.0)
       background = target;
-    else if (update->ntimestep != background_step)
+    else
       background += std::min(1.0, update->dt / lag) * (target - background);
-    background_step = update->ntimestep;
   }
   if (background == 0.0) return;
   for (int ii = 0; ii < inum; ii++) {
@@ -1489,7 +1488,6 @@ void PairCellSPH::settings(int narg, char **arg)
   background_auto = 0;
   background_min = 0.0;
   background_lag = -1.0;
-  background_step = -1;
   grow = GROW;
   // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
   // (h mode, tensile)
@@ -2075,10 +2073,8 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   if (blen > 0) fwrite(background_in.name.data(), sizeof(char), blen, fp);
   fwrite(&background_auto, sizeof(int), 1, fp);
   fwrite(&background_min, sizeof(double), 1, fp);
-  // version 10: background auto lag, and P_b with the step it relaxed on
+  // version 10: background auto lag
   fwrite(&background_lag, sizeof(double), 1, fp);
-  fwrite(&background, sizeof(double), 1, fp);
-  fwrite(&background_step, sizeof(bigint), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2145,15 +2141,10 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &background_auto, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &background_min, sizeof(double), 1, fp, nullptr, error);
   }
-  // the auto lag and state from version 10 on; older files relax from their first step
+  // the auto lag from version 10 on; older files had the default
   background_lag = -1.0;
-  background_step = -1;
-  double pb = 0.0;
-  if (comm->me == 0 && restart_version >= 10) {
+  if (comm->me == 0 && restart_version >= 10)
     utils::sfread(FLERR, &background_lag, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &pb, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &background_step, sizeof(bigint), 1, fp, nullptr, error);
-  }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -2178,9 +2169,6 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   MPI_Bcast(&background_auto, 1, MPI_INT, 0, world);
   MPI_Bcast(&background_min, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&background_lag, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&pb, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&background_step, 1, MPI_LMP_BIGINT, 0, world);
-  if (background_auto && background_step >= 0) background = pb;
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);

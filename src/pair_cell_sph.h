@@ -89,7 +89,6 @@ class PairCellSPH : public Pair {
   int background_auto;           // background auto P_min: P_b = P_min - the fluid's mean P
   double background_min;         // P_min (Pa)
   double background_lag;         // auto: P_b relaxes over this time (s); < 0: AUTO_LAG steps
-  bigint background_step;        // auto: the step P_b last relaxed on (-1: P_b has no value yet)
   void update_background();
   template <int EVFLAG> void outside_pressure();
 

@@ -98,8 +98,7 @@ def sph_to_version5(data, at, version):
     (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
     setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp;
     version 9: also the background P_b (double), its variable name's length (int) and name, the
-    auto flag (int) and P_min (double); version 10: also the auto lag (double), P_b (double) and
-    its step (bigint, 8 bytes)."""
+    auto flag (int) and P_min (double); version 10: also the auto lag (double)."""
     (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
     end = start + 8 + 4 + 8 + (8 if version >= 8 else 0)
@@ -107,7 +106,7 @@ def sph_to_version5(data, at, version):
         (blen,) = struct.unpack_from("=i", data, end + 8)
         end += 8 + 4 + blen + 4 + 8
     if version >= 10:
-        end += 8 + 8 + 8
+        end += 8
     del data[start:end]
     if version >= 7:
         n = header_count(data, 16, 17, "NTYPES")
