@@ -18,7 +18,7 @@ trap 'rm -rf "$work"' EXIT
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 export LAMMPS_POTENTIALS=$here/../potentials
 source "$here/scaled_cell.sh"
-declare -A NFLUID=([312]=450 [1092]=1624 [2562]=3900 [5762]=8800 [10242]=15600)
+declare -A NFLUID=([312]=450 [642]=733 [1092]=1624 [2562]=3900 [5762]=8800 [10242]=15600)
 for want in ${*:-312 1092 2562 5762 10242}; do
   for mode in ${MODES:-inflate shrink}; do
     dir="$work/$want-$mode"
