@@ -9,7 +9,8 @@
 #   bash bench/cell_model_speed.sh [nsteps=5000] [repeats=3] [models="particles boundary"]
 #   (models also: mass adaptive boundary-h14 auto; auto: the boundary with pair cell/sph
 #   background auto 5e4 in the timed run; 5e3 and 2e4 lost wall atoms in these undamped
-#   dynamics, doc/pair_cell_sph.md)
+#   dynamics while P_b followed its target on every step, and 5e3 runs with the default lag of
+#   200 steps: doc/pair_cell_sph.md, background pressure)
 # Prints particle-steps per second per core of the timed run (best of the repeats). Environment:
 # CELLSPH_BUILD (build folder), MPIEXEC (default mpirun), OUT (work folder), NPS (rank counts,
 # default "1 2").
