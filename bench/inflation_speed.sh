@@ -11,7 +11,8 @@
 # thin Neo-Hookean membrane at 200 kPa, time to 90 % of the uptake (physical time) and its error,
 # wall-clock time. Not a test; takes about 10 minutes. Run from anywhere after tools/setup.sh.
 # MODEL=boundary holds the fluid with the SPH wall boundary of pair cell/sph (cellgen's default gap)
-# instead of the wall-fluid particles; NFLIST="500 1624" picks resolutions.
+# instead of the wall-fluid particles; MODEL=auto as boundary with pair cell/sph background auto
+# 5e3 (doc/pair_cell_sph.md, background pressure); NFLIST="500 1624" picks resolutions.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}
@@ -24,7 +25,12 @@ rm -f series_*.dat final_*.txt runs.txt
 
 echo "# inflation_speed: $(date -u), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg)"
 model=${MODEL:-particles}
-if [ "$model" = boundary ]; then gapopt=(); bnd=1; else gapopt=(--gap 11e-6); bnd=0; fi
+bg=-1
+case $model in
+  boundary) gapopt=() bnd=1 ;;
+  auto) gapopt=() bnd=1 bg=5e3 ;;
+  *) gapopt=(--gap 11e-6) bnd=0 ;;
+esac
 echo "# wall-fluid model: $model"
 for nf in ${NFLIST:-500 1624 5000}; do
   "$build/tools/cellgen/cellgen" --nfluid $nf "${gapopt[@]}" --wall-mass 1e-12 --out cell$nf.data \
@@ -40,7 +46,7 @@ for nf in ${NFLIST:-500 1624 5000}; do
     t0=$(date +%s.%N)
     mpirun -np 2 "$build/bin/lmp" -in "$here/inflation_speed.lmp" -log none -var data cell$nf.data \
       -var dx $dx -var dt $2 -var accel $3 -var halt $4 -var tend $(python3 -c "print(4e-4 * $3)") \
-      -var tag $tag -var bnd $bnd >$tag.log 2>&1 ||
+      -var tag $tag -var bnd $bnd -var bg $bg >$tag.log 2>&1 ||
       echo "run $tag failed: $(grep -m 1 ERROR $tag.log)" >&2
     t1=$(date +%s.%N)
     echo "$nf $count $dx $h $2 $3 $1 $tag $(python3 -c "print(f'{$t1 - $t0:.1f}')")" >>runs.txt
