@@ -155,8 +155,8 @@ def main(tags):
                     if step in xs:
                         f.write("%.6f %.6f %.6f %.6f\n" % (xs[step], *(mean_se(v)[0] for v in (a, p, fe))))
             mid, fin = at_x(series, xs, 0.5), at_x(series, xs, end["X"])
-            for k, (key, name) in enumerate((("A", "section area"), ("P", "perimeter"), ("F", "Feret"))):
-                if mid and fin:
+            if mid and fin:
+                for k, (key, name) in enumerate((("A", "section area"), ("P", "perimeter"), ("F", "Feret"))):
                     (hm, hs, _), (em, es, _) = mean_se(mid[k]), mean_se(fin[k])
                     print(f"  {name:16s}  {hm:.3f}±{hs:.3f}  {em:.3f}±{es:.3f}   {APPLE[key]:.2f}   13 planes")
         for key, name in (("round", "roundness"), ("elong", "elongation"), ("compact", "compactness")):
