@@ -33,11 +33,11 @@ inline void cross(const double *u, const double *v, double *w)
 // the face ((b - a) x (c - a) points away from it), and dOmega/da, /db, /dc (Van Oosterom &
 // Strackee, IEEE Trans. Biomed. Eng. 30, 125, 1983): tan(Omega/2) = N / D,
 // N = a . (b x c), D = |a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|
-inline void solid_angle(const double *a, const double *b, const double *c, double &omega,
-                        double (&grad)[3][3])
+// (len: |a|, |b|, |c|, given by the caller, which shares them between triangles)
+inline void solid_angle(const double *a, const double *b, const double *c, const double *len,
+                        double &omega, double (&grad)[3][3])
 {
   const double *v[3] = {a, b, c};
-  const double len[3] = {sqrt(dot(a, a)), sqrt(dot(b, b)), sqrt(dot(c, c))};
   double bxc[3];
   cross(b, c, bxc);
   const double n = dot(a, bxc);

@@ -93,9 +93,9 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     adhp(nullptr), planeint(0.0), wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr),
-    refreshing(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0), prho2(nullptr),
-    rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr),
-    pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
+    refreshing(1), rebuilt(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0),
+    prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
+    pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -164,8 +164,9 @@ void PairCellSPH::compute(int eflag, int vflag)
       commode = COMM_TRIANGLES;
       CellCompat::forward_comm(comm, this);
     }
-    refreshing = neighbor->ago == 0 || grown || update->ntimestep - refreshed >= REFRESH ||
-        update->ntimestep < refreshed;
+    rebuilt = neighbor->ago == 0 || grown;
+    refreshing =
+        rebuilt || update->ntimestep - refreshed >= REFRESH || update->ntimestep < refreshed;
     if (refreshing) refreshed = update->ntimestep;
   }
   // per-atom h; h adaptive starting from the pair_coeff value: the boundary evaluated exactly at
@@ -364,7 +365,7 @@ void PairCellSPH::density_pass(int first)
     hdrift = 0.0;
   }
   if (walls && first) {
-    if (refreshing) merge_terms();
+    if (refreshing) keep_base();
     contacts.clear();
     for (const auto &t : touching) contact(t[0], t[1], t[2], t[3]);
   }
@@ -638,7 +639,8 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       if (PERATOM)
         for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
       terms.clear();
-      touching.clear();
+      termlen.clear();
+      if (rebuilt) touching.clear();
     } else {
       linear_deficit();
     }
@@ -701,16 +703,24 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   }
   pairfirst[inum] = npairs;
 
-  // the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f
-  if (WALLS && first && refreshing)
-    for (const auto &fb : boundarypairs) {
-      const int f = fb[0], b = fb[1];
-      const double delx = x[f][0] - x[b][0];
-      const double dely = x[f][1] - x[b][1];
-      const double delz = x[f][2] - x[b][2];
-      const PairConst &p = pc[type[f]][type[b]];
-      if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms<PERATOM>(f, b, p);
+  // the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f,
+  // the pairs of each f in a row (split_list)
+  if (WALLS && first && refreshing) {
+    const int npair = static_cast<int>(boundarypairs.size());
+    for (int k = 0; k < npair;) {
+      const int f = boundarypairs[k][0];
+      const int start = static_cast<int>(terms.size());
+      for (; k < npair && boundarypairs[k][0] == f; k++) {
+        const int b = boundarypairs[k][1];
+        const double delx = x[f][0] - x[b][0];
+        const double dely = x[f][1] - x[b][1];
+        const double delz = x[f][2] - x[b][2];
+        const PairConst &p = pc[type[f]][type[b]];
+        if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms<PERATOM>(f, b, p);
+      }
+      for (int t = start; t < static_cast<int>(terms.size()); t++) slot[terms[t].v] = -1;
     }
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -807,7 +817,8 @@ void PairCellSPH::grow_pairs(int n)
 
 /* ----------------------------------------------------------------------
    the terms of fluid atom f with the triangles (a, b, c) kept by wall atom b of its own cell:
-   kernel deficit, its gradient, and the contact with the wall surface
+   kernel deficit and its gradient, summed per vertex into terms (slot[v]: v's term of f, with
+   |x_v - x_f| in termlen), and at a neighbour build the contact candidates
 ------------------------------------------------------------------------- */
 
 template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
@@ -830,12 +841,25 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
     const double invh = PERATOM ? hscale[f][0] : p.scale.invh;
     const double q = gl * invh;
     if (q >= support) continue;
+    const int vert[3] = {a, b, c};
+    const double *rv[3] = {ra, rb, rc};
+    int s[3];
+    double len[3];
+    for (int v = 0; v < 3; v++) {
+      if (slot[vert[v]] < 0) {
+        slot[vert[v]] = static_cast<int>(terms.size());
+        terms.push_back(Term{f, vert[v], {0.0, 0.0, 0.0}});
+        termlen.push_back(sqrt(CellTriangle::dot(rv[v], rv[v])));
+      }
+      s[v] = slot[vert[v]];
+      len[v] = termlen[s[v]];
+    }
     double ph, dph;
     phi_beyond(q, ph, dph);
     // D_T = Phi(|g|/h) Omega_T / (4 pi), Omega_T the solid angle of T seen from f (exact: a point
     // formula (g . S_T)/|g|^3 would err by 1e-3 in gamma, 2 % in pressure); 1 - gamma_f = sum_T D_T
     double solid, dom[3][3];
-    CellTriangle::solid_angle(ra, rb, rc, solid, dom);
+    CellTriangle::solid_angle(ra, rb, rc, len, solid, dom);
     deficit[f] += ph * solid / (4.0 * M_PI);
     // per-atom h: dD_T/dh = -Phi'(q) q Omega_T / (4 pi h)
     if (PERATOM) dhdef[f] -= dph * q * invh * solid / (4.0 * M_PI);
@@ -843,13 +867,10 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
     // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
     const double cg = dph * solid * invh / (12.0 * M_PI * gl);
     const double co = ph / (4.0 * M_PI);
-    for (int v = 0; v < 3; v++) {
-      Term tm{f, v == 0 ? a : v == 1 ? b : c, {}};
-      for (int d = 0; d < 3; d++) tm.grad[d] = cg * g[d] + co * dom[v][d];
-      terms.push_back(tm);
-    }
-    // contact candidates until the next exact evaluation: every atom moves less than skin/2
-    if (gl < touch + 2.0 / 3.0 * edgemax) {
+    for (int v = 0; v < 3; v++)
+      for (int d = 0; d < 3; d++) terms[s[v]].grad[d] += cg * g[d] + co * dom[v][d];
+    // contact candidates until the next neighbour build: every atom moves less than skin/2
+    if (rebuilt && gl < touch + 2.0 / 3.0 * edgemax) {
       const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
       const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
       if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
@@ -911,6 +932,15 @@ void PairCellSPH::split_list(double margin)
     }
   }
   fluidfirst[inum] = static_cast<int>(fluidj.size());
+  // the boundary pairs of each fluid atom in a row, in list order (a stable counting sort), so
+  // that its terms are summed per vertex as they come
+  const int nall = atom->nlocal + atom->nghost;
+  std::vector<int> first(nall + 1, 0);
+  for (const auto &fb : boundarypairs) first[fb[0] + 1]++;
+  for (int i = 0; i < nall; i++) first[i + 1] += first[i];
+  std::vector<std::array<int, 2>> sorted(boundarypairs.size());
+  for (const auto &fb : boundarypairs) sorted[first[fb[0]]++] = fb;
+  boundarypairs.swap(sorted);
 }
 
 /* ----------------------------------------------------------------------
@@ -930,35 +960,14 @@ bool PairCellSPH::outgrown() const
 }
 
 /* ----------------------------------------------------------------------
-   after an exact evaluation: the terms merged per (fluid atom, vertex), grad_v D_f summed over
-   the vertex's triangles; the deficits and positions kept as the base of the linearisation
+   after an exact evaluation: the terms (one per fluid atom and vertex, grad_v D_f summed over
+   the vertex's triangles) indexed per fluid atom; the deficits and positions kept as the base of
+   the linearisation
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::merge_terms()
+void PairCellSPH::keep_base()
 {
   const int nall = atom->nlocal + atom->nghost;
-  // counting sort of the terms by fluid atom, then one term per vertex of each fluid atom
-  std::vector<int> first(nall + 1, 0), order(terms.size());
-  for (const Term &tm : terms) first[tm.f + 1]++;
-  for (int i = 0; i < nall; i++) first[i + 1] += first[i];
-  std::vector<int> next(first.begin(), first.end() - 1);
-  for (int k = 0; k < static_cast<int>(terms.size()); k++) order[next[terms[k].f]++] = k;
-  std::vector<Term> merged;
-  merged.reserve(terms.size() / 2);
-  for (int f = 0; f < nall; f++) {
-    const int start = static_cast<int>(merged.size());
-    for (int k = first[f]; k < first[f + 1]; k++) {
-      const Term &tm = terms[order[k]];
-      if (slot[tm.v] < 0) {
-        slot[tm.v] = static_cast<int>(merged.size());
-        merged.push_back(tm);
-      } else {
-        for (int d = 0; d < 3; d++) merged[slot[tm.v]].grad[d] += tm.grad[d];
-      }
-    }
-    for (int k = start; k < static_cast<int>(merged.size()); k++) slot[merged[k].v] = -1;
-  }
-  terms.swap(merged);
   // the terms of fluid atom f are terms[termfirst[f]] .. terms[termfirst[f + 1] - 1], and
   // gradsum[f] = sum_v grad_v D_f = -grad_f D_f
   termfirst.assign(nall + 1, 0);
@@ -2397,9 +2406,9 @@ double PairCellSPH::memory_usage()
         step.capacity() * sizeof(double);
   if (walls)
     bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
-        terms.capacity() * sizeof(Term) + contacts.capacity() * sizeof(Contact) +
-        touching.capacity() * sizeof(touching[0]) + fluidfirst.capacity() * sizeof(int) +
-        fluidj.capacity() * sizeof(int) + hsplit.capacity() * sizeof(double) +
-        boundarypairs.capacity() * sizeof(boundarypairs[0]);
+        terms.capacity() * sizeof(Term) + termlen.capacity() * sizeof(double) +
+        contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
+        fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
+        hsplit.capacity() * sizeof(double) + boundarypairs.capacity() * sizeof(boundarypairs[0]);
   return bytes;
 }

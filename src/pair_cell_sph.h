@@ -146,14 +146,16 @@ class PairCellSPH : public Pair {
     int f, v;          // fluid atom, wall vertex
     double grad[3];    // grad_v D_f: derivative of 1 - gamma_f in the vertex's position
   };
-  std::vector<Term> terms;       // per fluid atom and vertex of the triangles in its kernel support
-  double *deficit0;              // 1 - gamma at the last exact evaluation (partial sums per rank)
-  double **xbase;                // positions at the last exact evaluation
-  double **gradsum;              // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
-  double **disp;                 // displacement since the last exact evaluation
+  std::vector<Term> terms;    // per fluid atom and vertex of the triangles in its kernel support
+  std::vector<double> termlen;    // |x_v - x_f| of each term at the exact evaluation (scratch)
+  double *deficit0;               // 1 - gamma at the last exact evaluation (partial sums per rank)
+  double **xbase;                 // positions at the last exact evaluation
+  double **gradsum;               // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
+  double **disp;                  // displacement since the last exact evaluation
   std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
-  int *slot;                     // scratch of merge_terms(), -1 outside it
+  int *slot;                     // the term of vertex v of the fluid atom being evaluated, else -1
   int refreshing;                // 1 if this step evaluates the kernel completion exactly
+  int rebuilt;                   // 1 on a neighbour build: contact candidates are searched
   bigint refreshed;              // step of the last exact evaluation
   struct Contact {
     int f, v[3];         // fluid atom; triangle vertices a, b, c
@@ -164,7 +166,7 @@ class PairCellSPH : public Pair {
   std::vector<Contact> contacts;               // fluid atoms within reach of a triangle, this step
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
   std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
-  std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell
+  std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell, by f
   std::vector<double> hsplit;                       // per-atom h at the last split_list()
   enum { COMM_DENSITY, COMM_SUMS, COMM_H, COMM_LOAD, COMM_TRIANGLES, COMM_SHIFT } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
@@ -203,7 +205,7 @@ class PairCellSPH : public Pair {
   template <int PERATOM> void boundary_terms(int, int, const PairConst &);
   void split_list(double);
   bool outgrown() const;
-  void merge_terms();
+  void keep_base();
   void linear_deficit();
   void contact(int, int, int, int);
   void tabulate_phi();
