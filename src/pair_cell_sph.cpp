@@ -62,9 +62,16 @@ static const int HSTART = 4;
 
 // contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
 static const double CONTACT_H = 2.5;
-// kernel completion evaluated exactly every REFRESH steps (and on reneighbouring), linearised in
-// the atom displacements in between
+// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval) and on
+// reneighbouring, linearised in between in the displacements from a base half an interval ahead
+// (base_positions)
 static const int REFRESH = 20;
+static const int REFRESH_MAX = 320;
+// the largest jump of 1 - gamma of a fluid atom at an exact evaluation that lets the interval grow
+// (doc/pair_cell_sph.md, cost control: 1e-6 is 20 Pa of pressure at K = 20 MPa)
+static const double JUMP_TOL = 1e-6;
+// contacts: the near candidates lie within reach + NEAR x skin of the wall (wall_forces)
+static const double NEAR = 0.25;
 // particle shifting: the largest displacement of one step, in units of the atom's h
 static const double SHIFT_MAX = 0.05;
 // background auto: the default relaxation time of P_b, in steps (doc/pair_cell_sph.md: 20 steps
@@ -92,8 +99,9 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr), adhk(nullptr), adhering(0),
     adhp(nullptr), planeint(0.0), wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
-    deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), slot(nullptr),
-    refreshing(1), rebuilt(1), refreshed(-1), commode(COMM_DENSITY), restart_version(0),
+    deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), jump(nullptr),
+    xnear(nullptr), slot(nullptr), refreshing(1), rebuilt(1), predicted(0), measuring(0),
+    every(REFRESH), pending(REFRESH), refreshed(-1), commode(COMM_DENSITY), restart_version(0),
     prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
     pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
@@ -165,9 +173,13 @@ void PairCellSPH::compute(int eflag, int vflag)
       CellCompat::forward_comm(comm, this);
     }
     rebuilt = neighbor->ago == 0 || grown;
-    refreshing =
-        rebuilt || update->ntimestep - refreshed >= REFRESH || update->ntimestep < refreshed;
-    if (refreshing) refreshed = update->ntimestep;
+    if (update->setupflag) every = pending = REFRESH;
+    refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
+    measuring = refreshing && !rebuilt;
+    if (refreshing) {
+      refreshed = update->ntimestep;
+      every = pending;
+    }
   }
   // per-atom h; h adaptive starting from the pair_coeff value: the boundary evaluated exactly at
   // the converged h again, so that its linearisation in h starts there
@@ -180,7 +192,8 @@ void PairCellSPH::compute(int eflag, int vflag)
   }
   if (walls && (neighbor->ago == 0 || grown)) split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
-    if (pass > 0) refreshing = 1;
+    if (pass > 0) refreshing = 1, measuring = 0;
+    if (walls && refreshing) base_positions(!rebuilt && pass == 0);
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
   }
@@ -326,8 +339,8 @@ void PairCellSPH::shift_atoms()
 
 /* ----------------------------------------------------------------------
    one density pass with the loop compiled for this kernel, with or without wall boundary,
-   viscosity and per-atom h; first = 1: the step's first pass (with the wall boundary and
-   contacts), 0: a Newton iteration of h adaptive (the sums only); then the ghost sums into owners
+   viscosity and per-atom h; first = 1: the step's first pass (with the wall boundary), 0: a
+   Newton iteration of h adaptive (the sums only); then the ghost sums into owners
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::density_pass(int first)
@@ -365,9 +378,12 @@ void PairCellSPH::density_pass(int first)
     hdrift = 0.0;
   }
   if (walls && first) {
-    if (refreshing) keep_base();
-    contacts.clear();
-    for (const auto &t : touching) contact(t[0], t[1], t[2], t[3]);
+    if (refreshing) {
+      keep_base();
+      // a base ahead of the atoms: the linearised deficit at their positions now
+      if (predicted) linear_deficit();
+      if (measuring) next_interval();
+    }
   }
   commode = first ? COMM_DENSITY : COMM_SUMS;
   if (force->newton_pair) CellCompat::reverse_comm(comm, this);
@@ -545,6 +561,8 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(xbase);
   memory->destroy(gradsum);
   memory->destroy(disp);
+  memory->destroy(jump);
+  memory->destroy(xnear);
   memory->destroy(gradc);
   memory->destroy(stress);
   memory->destroy(slot);
@@ -582,6 +600,8 @@ void PairCellSPH::grow_peratom()
   memory->create(xbase, nmax, 3, "pair:xbase");
   memory->create(gradsum, nmax, 3, "pair:gradsum");
   memory->create(disp, nmax, 3, "pair:disp");
+  memory->create(jump, nmax, "pair:jump");
+  memory->create(xnear, nmax, 3, "pair:xnear");
   memory->create(slot, nmax, "pair:slot");
   for (int i = 0; i < nmax; i++) slot[i] = -1;
 }
@@ -647,6 +667,7 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   }
 
   int npairs = 0;
+  const bool tens = tensile > 0.0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0];
@@ -661,6 +682,7 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     int *pj = pairj;
     double *pdw = pairdw;
     double *pmu = pairmu;
+    double *pw = pairw;
     pairfirst[ii] = npairs;
     double rhoi = 0.0, dsumi = 0.0;
 
@@ -688,7 +710,7 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2)
       const double w = CellKernel::W<KERNEL>(p.scale, r);
       // the artificial stress's kernel shape f(r/h) (doc/pair_cell_sph.md, eq. T2)
-      if (tensile > 0.0) pairw[npairs] = CellKernel::shape<KERNEL>(r * p.scale.invh);
+      if (tens) pw[npairs] = CellKernel::shape<KERNEL>(r * p.scale.invh);
       rhoi += mj * w;
       if (newton_pair || j < nlocal) rho[j] += mi * w;
 
@@ -712,9 +734,9 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       const int start = static_cast<int>(terms.size());
       for (; k < npair && boundarypairs[k][0] == f; k++) {
         const int b = boundarypairs[k][1];
-        const double delx = x[f][0] - x[b][0];
-        const double dely = x[f][1] - x[b][1];
-        const double delz = x[f][2] - x[b][2];
+        const double delx = xbase[f][0] - xbase[b][0];
+        const double dely = xbase[f][1] - xbase[b][1];
+        const double delz = xbase[f][2] - xbase[b][2];
         const PairConst &p = pc[type[f]][type[b]];
         if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms<PERATOM>(f, b, p);
       }
@@ -823,7 +845,7 @@ void PairCellSPH::grow_pairs(int n)
 
 template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
 {
-  double **x = atom->x;
+  double **x = xbase;
   const double *xf = x[f];
   const double support = CellKernel::support(kernel);
   const double touch = p.reach + neighbor->skin;
@@ -960,6 +982,73 @@ bool PairCellSPH::outgrown() const
 }
 
 /* ----------------------------------------------------------------------
+   the positions of an exact evaluation, the base of the linearisation until the next: the atoms'
+   own (ahead = 0, and on a neighbour build, where the contact candidates are searched), or
+   half an interval ahead, x + v dt every / 2 (each atom's step at most skin/4), so that the
+   linearisation's error, quadratic in the displacement from the base, is the same at both ends
+   of the interval and cancels in the energy at the next exact evaluation (doc/pair_cell_sph.md)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::base_positions(int ahead)
+{
+  double **x = atom->x;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  // the linearisation from the last base at these positions, against the next (next_interval)
+  if (measuring) {
+    linear_deficit();
+    for (int i = 0; i < nall; i++) jump[i] = deficit[i];
+  }
+  predicted = ahead;
+  if (!predicted) {
+    for (int i = 0; i < nall; i++)
+      for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
+    return;
+  }
+  double **v = atom->v;
+  const double half = 0.5 * every * update->dt;
+  const double most = 0.25 * neighbor->skin;
+  for (int i = 0; i < nlocal; i++) {
+    const double step2 = half * half * (v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    const double k = step2 > most * most ? most / sqrt(step2) : 1.0;
+    for (int d = 0; d < 3; d++) disp[i][d] = k * half * v[i][d];
+  }
+  commode = COMM_AHEAD;
+  CellCompat::forward_comm(comm, this);
+  for (int i = 0; i < nall; i++)
+    for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d] + disp[i][d];
+}
+
+/* ----------------------------------------------------------------------
+   the interval to the exact evaluation after the next, from the jump of 1 - gamma of every fluid
+   atom at this one (the new linearisation against the last, at the same positions: the jump of
+   the energy): doubled while the largest jump is below JUMP_TOL / 4, halved above JUMP_TOL,
+   between REFRESH and REFRESH_MAX steps
+------------------------------------------------------------------------- */
+
+void PairCellSPH::next_interval()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) jump[i] = deficit[i] - jump[i];
+  if (force->newton_pair) {
+    commode = COMM_JUMP;
+    CellCompat::reverse_comm(comm, this);
+  }
+  const int *type = atom->type;
+  double most = 0.0, all = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    if (fluid[type[i]]) most = std::max(most, fabs(jump[i]));
+  MPI_Allreduce(&most, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (all > JUMP_TOL)
+    pending = std::max(every / 2, REFRESH);
+  else if (all < 0.25 * JUMP_TOL)
+    pending = std::min(every * 2, REFRESH_MAX);
+  else
+    pending = every;
+}
+
+/* ----------------------------------------------------------------------
    after an exact evaluation: the terms (one per fluid atom and vertex, grad_v D_f summed over
    the vertex's triangles) indexed per fluid atom; the deficits and positions kept as the base of
    the linearisation
@@ -973,13 +1062,9 @@ void PairCellSPH::keep_base()
   termfirst.assign(nall + 1, 0);
   for (const Term &tm : terms) termfirst[tm.f + 1]++;
   for (int i = 0; i < nall; i++) termfirst[i + 1] += termfirst[i];
-  double **x = atom->x;
   for (int i = 0; i < nall; i++) {
     deficit0[i] = deficit[i];
-    for (int d = 0; d < 3; d++) {
-      xbase[i][d] = x[i][d];
-      gradsum[i][d] = 0.0;
-    }
+    for (int d = 0; d < 3; d++) gradsum[i][d] = 0.0;
   }
   for (const Term &tm : terms)
     for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
@@ -1002,21 +1087,22 @@ void PairCellSPH::linear_deficit()
 {
   double **x = atom->x;
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) {
+  for (int i = 0; i < nall; i++)
     for (int d = 0; d < 3; d++) disp[i][d] = x[i][d] - xbase[i][d];
+  const double *hv = hmode != HFIXED ? atom->dvector[ih] : nullptr;
+  for (int i = 0; i < nall; i++) {
+    double sum = 0.0;
+    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
+      const double *dv = disp[terms[k].v];
+      sum += terms[k].grad[0] * dv[0] + terms[k].grad[1] * dv[1] + terms[k].grad[2] * dv[2];
+    }
     deficit[i] = deficit0[i] -
-        (gradsum[i][0] * disp[i][0] + gradsum[i][1] * disp[i][1] + gradsum[i][2] * disp[i][2]);
-  }
-  if (hmode != HFIXED) {
-    const double *hv = atom->dvector[ih];
-    for (int i = 0; i < nall; i++) {
+        (gradsum[i][0] * disp[i][0] + gradsum[i][1] * disp[i][1] + gradsum[i][2] * disp[i][2]) +
+        sum;
+    if (hv) {
       dhdef[i] = dhdef0[i];
       deficit[i] += dhdef0[i] * (hv[i] - hbase[i]);
     }
-  }
-  for (const Term &tm : terms) {
-    const double *dv = disp[tm.v];
-    deficit[tm.f] += tm.grad[0] * dv[0] + tm.grad[1] * dv[1] + tm.grad[2] * dv[2];
   }
 }
 
@@ -1059,32 +1145,17 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
     }
   }
 
-  // contacts with the wall surface: F on the fluid atom, -lambda_v F on vertex v (newton on)
-  for (const Contact &ct : contacts) {
-    double fv[3][3];
-    for (int d = 0; d < 3; d++) {
-      f[ct.f][d] += ct.force[d];
-      for (int k = 0; k < 3; k++) {
-        fv[k][d] = -ct.lambda[k] * ct.force[d];
-        wallload[ct.v[k]][d] += fv[k][d];
-      }
-    }
-    if (EVFLAG) {
-      if (eflag_global) eng_vdwl += ct.energy;
-      if (eflag_atom) eatom[ct.f] += ct.energy;
-      if (vflag_either) {
-        // virial about vertex c: sum over f, a, b of (x - x_c) F
-        const int c = ct.v[2];
-        double force[3] = {ct.force[0], ct.force[1], ct.force[2]};
-        double dfc[3], dac[3], dbc[3];
-        for (int d = 0; d < 3; d++) {
-          dfc[d] = x[ct.f][d] - x[c][d];
-          dac[d] = x[ct.v[0]][d] - x[c][d];
-          dbc[d] = x[ct.v[1]][d] - x[c][d];
-        }
-        v_tally4(ct.f, ct.v[0], ct.v[1], c, force, fv[0], fv[1], dfc, dac, dbc);
-      }
-    }
+  // contacts with the wall surface: the candidates of the neighbour build within reach + margin
+  // (near), taken again from all of them once an atom has moved margin / 2 since
+  const double margin = NEAR * neighbor->skin;
+  if (rebuilt || moved_since_near(0.5 * margin)) {
+    near.clear();
+    for (const auto &t : touching)
+      if (contact<EVFLAG>(t[0], t[1], t[2], t[3], margin)) near.push_back(t);
+    for (int i = 0; i < nall; i++)
+      for (int d = 0; d < 3; d++) xnear[i][d] = x[i][d];
+  } else {
+    for (const auto &t : near) contact<EVFLAG>(t[0], t[1], t[2], t[3], margin);
   }
   if (background != 0.0) outside_pressure<EVFLAG>();
   for (int i = 0; i < nall; i++)
@@ -1150,32 +1221,74 @@ template <int EVFLAG> void PairCellSPH::outside_pressure()
 }
 
 /* ----------------------------------------------------------------------
-   contact of fluid atom f with the triangles kept by wall atom w (its own cell's wall):
-   F = F_c (1 - d/delta)^2 e from the closest point p at distance d < delta, e = (x_f - p)/d,
-   energy F_c delta (1 - d/delta)^3 / 3, so that F = -grad E for the atom and the vertices
+   contact of fluid atom f with triangle (a, b, c) of its own cell's wall: F = F_c (1 - d/delta)^2 e
+   from the closest point p at distance d < delta, e = (x_f - p)/d, on the fluid atom and
+   -lambda_v F on vertex v (newton on, the vertices' share as wall load), energy
+   F_c delta (1 - d/delta)^3 / 3, so that F = -grad E for the atom and the vertices; true if
+   d < delta + margin
 ------------------------------------------------------------------------- */
 
-void PairCellSPH::contact(int f, int a, int b, int c)
+template <int EVFLAG> bool PairCellSPH::contact(int f, int a, int b, int c, double margin)
 {
   const PairConst &p = pc[atom->type[f]][atom->type[b]];
   double **x = atom->x;
   const CellTriangle::Foot ft = CellTriangle::closest(x[f], x[a], x[b], x[c]);
   const double e[3] = {x[f][0] - ft.p[0], x[f][1] - ft.p[1], x[f][2] - ft.p[2]};
-  const double d = sqrt(CellTriangle::dot(e, e));
-  if (d >= p.reach) return;
-  if (d == 0.0)
+  const double dist = sqrt(CellTriangle::dot(e, e));
+  if (dist >= p.reach) return dist < p.reach + margin;
+  if (dist == 0.0)
     error->one(FLERR,
                "Pair cell/sph: fluid atom {} (cell {}) lies on its wall on step {}: the contact "
                "force has no direction; the run went unstable",
                atom->tag[f], atom->molecule[f], update->ntimestep);
-  const double s = 1.0 - d / p.reach;
-  const double fd = p.fcontact * s * s / d;
+  const double s = 1.0 - dist / p.reach;
+  const double fd = p.fcontact * s * s / dist;
   // F = F_c (1 - d/delta)^2 (x_f - p) / d
-  contacts.push_back(Contact{f,
-                             {a, b, c},
-                             {fd * e[0], fd * e[1], fd * e[2]},
-                             {ft.l[0], ft.l[1], ft.l[2]},
-                             p.fcontact * p.reach * s * s * s / 3.0});
+  double force[3] = {fd * e[0], fd * e[1], fd * e[2]};
+  const int v[3] = {a, b, c};
+  double fv[3][3];
+  double **fatom = atom->f;
+  for (int d = 0; d < 3; d++) {
+    fatom[f][d] += force[d];
+    for (int k = 0; k < 3; k++) {
+      fv[k][d] = -ft.l[k] * force[d];
+      wallload[v[k]][d] += fv[k][d];
+    }
+  }
+  if (!EVFLAG) return true;
+  const double energy = p.fcontact * p.reach * s * s * s / 3.0;
+  if (eflag_global) eng_vdwl += energy;
+  if (eflag_atom) eatom[f] += energy;
+  if (vflag_either) {
+    // virial about vertex c: sum over f, a, b of (x - x_c) F
+    double dfc[3], dac[3], dbc[3];
+    for (int d = 0; d < 3; d++) {
+      dfc[d] = x[f][d] - x[c][d];
+      dac[d] = x[a][d] - x[c][d];
+      dbc[d] = x[b][d] - x[c][d];
+    }
+    v_tally4(f, a, b, c, force, fv[0], fv[1], dfc, dac, dbc);
+  }
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   true if an owned or ghost atom has moved more than dmax since the near contact candidates were
+   taken (a local decision: the contacts are the same with either list)
+------------------------------------------------------------------------- */
+
+bool PairCellSPH::moved_since_near(double dmax) const
+{
+  double **x = atom->x;
+  const int nall = atom->nlocal + atom->nghost;
+  const double dmax2 = dmax * dmax;
+  for (int i = 0; i < nall; i++) {
+    const double dx = x[i][0] - xnear[i][0];
+    const double dy = x[i][1] - xnear[i][1];
+    const double dz = x[i][2] - xnear[i][2];
+    if (dx * dx + dy * dy + dz * dz > dmax2) return true;
+  }
+  return false;
 }
 
 /* ----------------------------------------------------------------------
@@ -2286,6 +2399,11 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 {
   int m = 0;
   if (commode == COMM_TRIANGLES) return tris->pack(n, list, buf);
+  if (commode == COMM_AHEAD) {
+    for (int k = 0; k < n; k++)
+      for (int d = 0; d < 3; d++) buf[m++] = disp[list[k]][d];
+    return m;
+  }
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
     for (int k = 0; k < n; k++) buf[m++] = hv[list[k]];
@@ -2314,6 +2432,11 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
   int m = 0;
   if (commode == COMM_TRIANGLES) {
     tris->unpack(n, first, buf);
+    return;
+  }
+  if (commode == COMM_AHEAD) {
+    for (int i = first; i < first + n; i++)
+      for (int d = 0; d < 3; d++) disp[i][d] = buf[m++];
     return;
   }
   if (commode == COMM_H) {
@@ -2355,6 +2478,10 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
     }
     return m;
   }
+  if (commode == COMM_JUMP) {
+    for (int i = first; i < first + n; i++) buf[m++] = jump[i];
+    return m;
+  }
   double **v = commode == COMM_SHIFT ? gradc : wallload;
   for (int i = first; i < first + n; i++)
     for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
@@ -2375,6 +2502,10 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
       if (wall) deficit[list[k]] += buf[m++];
       if (wall && peratom) dhdef[list[k]] += buf[m++];
     }
+    return;
+  }
+  if (commode == COMM_JUMP) {
+    for (int k = 0; k < n; k++) jump[list[k]] += buf[m++];
     return;
   }
   double **v = commode == COMM_SHIFT ? gradc : wallload;
@@ -2407,7 +2538,7 @@ double PairCellSPH::memory_usage()
   if (walls)
     bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
         terms.capacity() * sizeof(Term) + termlen.capacity() * sizeof(double) +
-        contacts.capacity() * sizeof(Contact) + touching.capacity() * sizeof(touching[0]) +
+        (touching.capacity() + near.capacity()) * sizeof(touching[0]) +
         fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
         hsplit.capacity() * sizeof(double) + boundarypairs.capacity() * sizeof(boundarypairs[0]);
   return bytes;

@@ -149,26 +149,34 @@ class PairCellSPH : public Pair {
   std::vector<Term> terms;    // per fluid atom and vertex of the triangles in its kernel support
   std::vector<double> termlen;    // |x_v - x_f| of each term at the exact evaluation (scratch)
   double *deficit0;               // 1 - gamma at the last exact evaluation (partial sums per rank)
-  double **xbase;                 // positions at the last exact evaluation
+  double **xbase;                 // positions of the last exact evaluation (base_positions)
   double **gradsum;               // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
   double **disp;                  // displacement since the last exact evaluation
+  double *jump;                   // change of 1 - gamma at an exact evaluation (partial per rank)
+  double **xnear;                 // positions when the near contact candidates were taken
   std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
   int *slot;                     // the term of vertex v of the fluid atom being evaluated, else -1
   int refreshing;                // 1 if this step evaluates the kernel completion exactly
   int rebuilt;                   // 1 on a neighbour build: contact candidates are searched
+  int predicted;                 // 1 if the last exact evaluation's base is ahead of the atoms
+  int measuring;                 // 1 if this exact evaluation measures the jump (next_interval)
+  int every, pending;            // steps to the next exact evaluation, and from it to the one after
   bigint refreshed;              // step of the last exact evaluation
-  struct Contact {
-    int f, v[3];         // fluid atom; triangle vertices a, b, c
-    double force[3];     // force on the fluid atom; -lambda_v force on vertex v
-    double lambda[3];    // barycentric coordinates of the closest point
-    double energy;       // contact energy
-  };
-  std::vector<Contact> contacts;               // fluid atoms within reach of a triangle, this step
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
+  std::vector<std::array<int, 4>> near;        // those of them near contact (wall_forces)
   std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
   std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell, by f
   std::vector<double> hsplit;                       // per-atom h at the last split_list()
-  enum { COMM_DENSITY, COMM_SUMS, COMM_H, COMM_LOAD, COMM_TRIANGLES, COMM_SHIFT } commode;
+  enum {
+    COMM_DENSITY,
+    COMM_SUMS,
+    COMM_H,
+    COMM_LOAD,
+    COMM_TRIANGLES,
+    COMM_SHIFT,
+    COMM_AHEAD,
+    COMM_JUMP
+  } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
@@ -205,9 +213,12 @@ class PairCellSPH : public Pair {
   template <int PERATOM> void boundary_terms(int, int, const PairConst &);
   void split_list(double);
   bool outgrown() const;
+  void base_positions(int);
   void keep_base();
+  void next_interval();
   void linear_deficit();
-  void contact(int, int, int, int);
+  template <int EVFLAG> bool contact(int, int, int, int, double);
+  bool moved_since_near(double) const;
   void tabulate_phi();
   void wetting();
   void phi_beyond(double q, double &value, double &slope) const;
