@@ -707,17 +707,18 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       }
       const double r = sqrt(rsq);
       const double mj = rmass[j];
-      // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2)
+      // rho_i += m_j W_ij, rho_j += m_i W_ij (doc/model.md §3.2); all of the pair's kernel values
+      // before the stores, which may alias p
       const double w = CellKernel::W<KERNEL>(p.scale, r);
+      const double mmdw = mi * mj * CellKernel::dWr<KERNEL>(p.scale, r);
+      const double mu = p.mu2 * mmdw;
       // the artificial stress's kernel shape f(r/h) (doc/pair_cell_sph.md, eq. T2)
       if (tens) pw[npairs] = CellKernel::shape<KERNEL>(r * p.scale.invh);
       rhoi += mj * w;
       if (newton_pair || j < nlocal) rho[j] += mi * w;
-
-      const double mmdw = mi * mj * CellKernel::dWr<KERNEL>(p.scale, r);
       pj[npairs] = j;
       pdw[npairs] = mmdw;
-      if (VISCOUS) pmu[npairs] = p.mu2 * mmdw;
+      if (VISCOUS) pmu[npairs] = mu;
       npairs++;
     }
     rho[i] += rhoi;
