@@ -193,7 +193,8 @@ void PairCellSPH::compute(int eflag, int vflag)
   if (walls && (neighbor->ago == 0 || grown)) split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
     if (pass > 0) refreshing = 1, measuring = 0;
-    if (walls && refreshing) base_positions(!rebuilt && pass == 0);
+    // the base ahead in dynamics only (a minimisation's velocities are not its motion)
+    if (walls && refreshing) base_positions(!rebuilt && pass == 0 && update->whichflag == 1);
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
   }
@@ -1051,8 +1052,8 @@ void PairCellSPH::next_interval()
 
 /* ----------------------------------------------------------------------
    after an exact evaluation: the terms (one per fluid atom and vertex, grad_v D_f summed over
-   the vertex's triangles) indexed per fluid atom; the deficits and positions kept as the base of
-   the linearisation
+   the vertex's triangles) indexed per fluid atom; the deficits kept with the base positions
+   (base_positions) as the base of the linearisation
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::keep_base()
