@@ -163,7 +163,8 @@ void PairCellSPH::compute(int eflag, int vflag)
   if (background_in.is_variable()) update_background();
 
   if (walls) {
-    if (neighbor->ago == 0 || grown) {
+    rebuilt = neighbor->ago == 0 || grown;
+    if (rebuilt) {
       tris->build();
       // a triangle whose centroid is within the support of f until the next build has its
       // vertices within the support + its centroid-vertex distance + skin of f, and that
@@ -172,7 +173,6 @@ void PairCellSPH::compute(int eflag, int vflag)
       commode = COMM_TRIANGLES;
       CellCompat::forward_comm(comm, this);
     }
-    rebuilt = neighbor->ago == 0 || grown;
     if (update->setupflag) every = pending = REFRESH;
     refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
     measuring = refreshing && !rebuilt;
@@ -190,7 +190,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  if (walls && (neighbor->ago == 0 || grown)) split_list(neighbor->skin);
+  if (walls && rebuilt) split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
     if (pass > 0) refreshing = 1, measuring = 0;
     // the base ahead in dynamics only (a minimisation's velocities are not its motion)

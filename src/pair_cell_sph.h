@@ -151,7 +151,7 @@ class PairCellSPH : public Pair {
   double *deficit0;               // 1 - gamma at the last exact evaluation (partial sums per rank)
   double **xbase;                 // positions of the last exact evaluation (base_positions)
   double **gradsum;               // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
-  double **disp;                  // displacement since the last exact evaluation
+  double **disp;                  // x - xbase; in base_positions() the step to the base
   double *jump;                   // change of 1 - gamma at an exact evaluation (partial per rank)
   double **xnear;                 // positions when the near contact candidates were taken
   std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
