@@ -101,9 +101,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), jump(nullptr),
     xnear(nullptr), slot(nullptr), refreshing(1), rebuilt(1), predicted(0), measuring(0),
-    every(REFRESH), pending(REFRESH), refreshed(-1), commode(COMM_DENSITY), restart_version(0),
-    prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
-    pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
+    every(REFRESH), pending(REFRESH), lastjump(0.0), refreshed(-1), commode(COMM_DENSITY),
+    restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
+    pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0),
+    maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -114,6 +115,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
   reinitflag = 0;
   comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
   comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load or grad C
+  // compute pair: the wall boundary's interval between exact evaluations and its last jump
+  nextra = 2;
+  pvector = new double[nextra];
+  pvector[0] = pvector[1] = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -121,6 +126,7 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
 PairCellSPH::~PairCellSPH()
 {
   destroy_peratom();
+  delete[] pvector;
   memory->destroy(pairfirst);
   memory->destroy(pairj);
   memory->destroy(pairdw);
@@ -173,7 +179,10 @@ void PairCellSPH::compute(int eflag, int vflag)
       commode = COMM_TRIANGLES;
       CellCompat::forward_comm(comm, this);
     }
-    if (update->setupflag) every = pending = REFRESH;
+    if (update->setupflag) {
+      every = pending = REFRESH;
+      lastjump = 0.0;
+    }
     refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
     measuring = refreshing && !rebuilt;
     if (refreshing) {
@@ -198,6 +207,10 @@ void PairCellSPH::compute(int eflag, int vflag)
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
   }
+  // compute pair sums pvector over ranks: the global values on rank 0, 0 elsewhere or without walls
+  const int reports = walls && comm->me == 0;
+  pvector[0] = reports ? every : 0.0;
+  pvector[1] = reports ? lastjump : 0.0;
   apply_eos();
   commode = COMM_DENSITY;
   CellCompat::forward_comm(comm, this);
@@ -1042,6 +1055,7 @@ void PairCellSPH::next_interval()
   for (int i = 0; i < nlocal; i++)
     if (fluid[type[i]]) most = std::max(most, fabs(jump[i]));
   MPI_Allreduce(&most, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  lastjump = all;
   if (all > JUMP_TOL)
     pending = std::max(every / 2, REFRESH);
   else if (all < 0.25 * JUMP_TOL)

@@ -161,6 +161,7 @@ class PairCellSPH : public Pair {
   int predicted;                 // 1 if the last exact evaluation's base is ahead of the atoms
   int measuring;                 // 1 if this exact evaluation measures the jump (next_interval)
   int every, pending;            // steps to the next exact evaluation, and from it to the one after
+  double lastjump;               // largest jump of 1 - gamma (all ranks) at the last measurement
   bigint refreshed;              // step of the last exact evaluation
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
   std::vector<std::array<int, 4>> near;        // those of them near contact (wall_forces)
