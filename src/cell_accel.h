@@ -54,6 +54,21 @@ class CellAccel : protected Pointers {
   void write(std::vector<double> &list) const;
   bool read(const double *v);
 
+  // what an evaluation changes, to evaluate a transfer again from the state before it
+  struct Saved {
+    double value, lag_estimate, lag_error;
+    int pending, open_samples, sealed_samples;
+  };
+  Saved save() const
+  {
+    return {value, lag_estimate, lag_error, pending, open_samples, sealed_samples};
+  }
+  void restore(const Saved &s)
+  {
+    value = s.value, lag_estimate = s.lag_estimate, lag_error = s.lag_error;
+    pending = s.pending, open_samples = s.open_samples, sealed_samples = s.sealed_samples;
+  }
+
   double value;              // accel in use
   int automatic, pending;    // auto; pending: set from the cells' state at the next evaluation
   double lag_estimate, lag_error;    // of the last adaptation window

@@ -41,6 +41,9 @@ class CellTurgorState : protected Pointers {
   // the cell's state on this rank, nullptr if it has none
   const Cell *find(tagint id) const;
   void clear() { cells.clear(); }
+  // the state before a transfer's evaluation, to evaluate it again (fix cell/turgor setup)
+  void save() { saved = cells; }
+  void restore() { cells = saved; }
 
   // every rank's cell states: with everywhere, their restart values and the last evaluation's
   // turgor, psi_surface and rate on every rank (before the cells are found again at init)
@@ -55,6 +58,7 @@ class CellTurgorState : protected Pointers {
 
  private:
   std::map<tagint, Cell> cells;    // the home cells' (and on rank 0 unknown cells') state
+  std::map<tagint, Cell> saved;    // as it was before the last transfer's evaluation
 
   void pack(std::vector<double> &list, bool full) const;
 };

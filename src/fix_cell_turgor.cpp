@@ -23,6 +23,7 @@
 #include "group.h"
 #include "input.h"
 #include "math_const.h"
+#include "memory.h"
 #include "pair.h"
 #include "update.h"
 #include "variable.h"
@@ -35,16 +36,18 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-// 5: + water exchanged between cells; 4: + accel auto state; 3: + solids per cell; 2: begins with
+// 6: + the water and time of the transfer waiting to be applied (per atom: its mass change); 5: + water
+// exchanged between cells; 4: + accel auto state; 3: + solids per cell; 2: begins with
 // -version; 1: none
-static const int RESTART_VERSION = 5;
+static const int RESTART_VERSION = 6;
 
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
-// between cells (5)
+// between cells (5), water and physical time of the waiting transfer, the step of the last
+// transfer's evaluation (6)
 static int restart_globals(int version)
 {
-  return version >= 5 ? 8 : (version >= 4 ? 7 : 2);
+  return version >= 6 ? 11 : version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -61,8 +64,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Illegal fix cell/turgor command: expected 'fix ID group cell/turgor N keyword "
                "value ...'");
-  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
-  if (nevery <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", nevery);
+  every = utils::inumeric(FLERR, arg[3], false, lmp);
+  if (every <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", every);
 
   bool lp_set = false, pi0_set = false;
   int bondtype = 0;
@@ -192,18 +195,33 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
   comm_forward = 1;
+  grow_arrays(atom->nmax);
+  for (int i = 0; i < atom->nlocal; i++) pending[i] = 0.0;
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   a transfer still waiting (evaluated at the last step of the fix's last run) is applied
+------------------------------------------------------------------------- */
 
-FixCellTurgor::~FixCellTurgor() = default;
+FixCellTurgor::~FixCellTurgor()
+{
+  if (atom->rmass)
+    for (int i = 0; i < atom->nlocal; i++) atom->rmass[i] *= 1.0 + pending[i];
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(pending);
+}
 
 /* ---------------------------------------------------------------------- */
 
 int FixCellTurgor::setmask()
 {
-  return END_OF_STEP;
+  return END_OF_STEP | PRE_FORCE;
 }
 
 /* ----------------------------------------------------------------------
@@ -258,14 +276,74 @@ double FixCellTurgor::pair_bulk_modulus()
 
 void FixCellTurgor::setup(int)
 {
-  evaluate(false);
+  // a transfer waiting from the last run or the restart file (its per-atom changes)
+  int mine = 0, any = 0;
+  for (int i = 0; i < atom->nlocal && !mine; i++) mine = pending[i] != 0.0;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  any_pending = any != 0 || moved_pending != 0.0 || time_pending != 0.0;
+  // the transfer of the run's first step: evaluated again from the state as it is now when the
+  // last run's end evaluated it (the same, unless set or fix_modify changed something between
+  // the runs), kept as read from a restart file, else evaluated here
+  const bigint step = update->ntimestep;
+  const bool due = (step + 1) % every == 0;
+  if (due && evaluated == step && saved == step) {
+    state.restore();
+    accel.restore(accel_saved);
+    water_exchanged = exchanged_saved;
+    transfer();
+  } else if (due && evaluated != step) {
+    transfer();
+  } else {
+    evaluate(false);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   evaluate the transfer of the next step, keeping the state from before for setup
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::transfer()
+{
+  state.save();
+  accel_saved = accel.save();
+  exchanged_saved = water_exchanged;
+  saved = update->ntimestep;
+  evaluate(true);
+}
+
+/* ----------------------------------------------------------------------
+   the transfer of the last step's end, before this step's forces (after its neighbour build)
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::pre_force(int)
+{
+  if (any_pending) apply_pending();
+}
+
+/* ----------------------------------------------------------------------
+   m_i <- m_i (1 + dM/M) on the fluid atoms of the cells, owned then ghosts
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::apply_pending()
+{
+  double *rmass = atom->rmass;
+  for (int i = 0; i < atom->nlocal; i++) {
+    rmass[i] *= 1.0 + pending[i];
+    pending[i] = 0.0;
+  }
+  CellCompat::forward_comm(comm, this);
+  water_moved += moved_pending;
+  physical_time += time_pending;
+  moved_pending = time_pending = 0.0;
+  any_pending = false;
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixCellTurgor::end_of_step()
 {
-  evaluate(true);
+  // evaluated at the end of step j N - 1, applied before the forces of step j N
+  if ((update->ntimestep + 1) % every == 0) transfer();
 }
 
 /* ----------------------------------------------------------------------
@@ -281,9 +359,10 @@ void FixCellTurgor::evaluate(bool transfer)
   // accel auto: transfer j (at step j N; the next one when not transferring) is at position
   // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
   // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
-  const CellAccel::Cycle cycle = accel.cycle(update->ntimestep / nevery + (transfer ? 0 : 1),
-                                             transfer, offset_time(), nevery * update->dt);
-  const double dtw = cycle.sealed ? 0.0 : accel.value * nevery * update->dt;
+  const bigint next = update->ntimestep + 1;
+  const CellAccel::Cycle cycle =
+      accel.cycle(next / every + (transfer ? 0 : 1), transfer, offset_time(), every * update->dt);
+  const double dtw = cycle.sealed ? 0.0 : accel.value * every * update->dt;
   std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
   // exchange: per home cell psi, dpsi/dM, rate and z for the network, and M
@@ -297,7 +376,11 @@ void FixCellTurgor::evaluate(bool transfer)
 
   // T and the drive's inputs at the physical time of the start of the transfer (f_ID[2]); a curve
   // X/X0(t) at its end
+  // (the curve's variable reads f_ID[2] at the transfer's end; the fix's clock moves there when
+  // the transfer is applied)
+  const double start = physical_time;
   drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
+  physical_time = start;
 
   // the turgor that drives each home cell's flux, the cell checked and its M0 and S set
   std::vector<double> turgors(home.size());
@@ -462,21 +545,22 @@ void FixCellTurgor::evaluate(bool transfer)
   }
   if (!transfer) return;
 
-  // m_i <- m_i (1 + dM/M) on the cell's fluid atoms, dM/M from the home rank, then to the ghosts
+  // dM/M of each cell from its home rank to its fluid atoms, applied before the next step's forces
+  // (pre_force: m_i <- m_i (1 + dM/M))
   const CellRegistry &reg = cells->registry();
   std::vector<double> factor;
   reg.scatter(1, scale, factor);
-  double *rmass = atom->rmass;
   const int *type = atom->type;
   const std::vector<int> &cellof = cells->cell_of_atom();
   for (int i = 0; i < atom->nlocal; i++)
-    if (cellof[i] >= 0 && type[i] == fluidtype) rmass[i] *= 1.0 + factor[reg.slot(cellof[i])];
-  CellCompat::forward_comm(comm, this);
+    if (cellof[i] >= 0 && type[i] == fluidtype) pending[i] = factor[reg.slot(cellof[i])];
+  any_pending = true;
 
   double all_moved;
   MPI_Allreduce(&moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
-  water_moved += all_moved;
-  if (drive.kind != CellDrive::CURVE) physical_time += dtw;
+  moved_pending = all_moved;
+  time_pending = dtw;
+  evaluated = update->ntimestep;
   if (accel.automatic && cycle.position == cycle.every + cycle.hold - 1) {
     std::vector<const double *> probes;
     for (int c : home) probes.push_back(state[cells->id(c)].probe);
@@ -558,7 +642,7 @@ double FixCellTurgor::modulus(int c) const
 
 double FixCellTurgor::offset_time() const
 {
-  return tau > 0.0 ? tau : 100.0 * nevery * update->dt;
+  return tau > 0.0 ? tau : 100.0 * every * update->dt;
 }
 
 /* ----------------------------------------------------------------------
@@ -577,7 +661,7 @@ double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
   const double gap = psph - cells->wall_turgor(c);
   const double window = offset_time();
   // offset <- offset + (N dt / tau) (P_SPH - P_W - offset), from 0: an exponential running mean
-  if (advance) s.offset += std::min(1.0, nevery * update->dt / window) * (gap - s.offset);
+  if (advance) s.offset += std::min(1.0, every * update->dt / window) * (gap - s.offset);
   s.turgor = psph - s.offset;
   return s.turgor;
 }
@@ -713,6 +797,8 @@ int FixCellTurgor::modify_param(int narg, char **arg)
       error->all(FLERR,
                  "Fix_modify cell/turgor: exchange does not work with accel auto: give accel a "
                  "number");
+    // a transfer evaluated again at setup (setup) keeps the new accel
+    accel_saved = accel.save();
     return used;
   }
   const double value = key == "psi" ? 0.0 : utils::numeric(FLERR, arg[1], false, lmp);
@@ -738,6 +824,9 @@ void FixCellTurgor::write_restart(FILE *fp)
                               water_moved};
   accel.write(list);
   list.push_back(water_exchanged);
+  list.push_back(moved_pending);
+  list.push_back(time_pending);
+  list.push_back((double) evaluated);
   list.insert(list.end(), cellstate.begin(), cellstate.end());
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -764,6 +853,7 @@ void FixCellTurgor::restart(char *buf)
   // accel auto continues from the adapted accel and its window when the file has them (4)
   const bool adapted = version >= 4 && accel.read(&list[3]);
   if (version >= 5) water_exchanged = list[8];
+  if (version >= 6) moved_pending = list[9], time_pending = list[10], evaluated = (bigint) list[11];
   state.clear();
   bool other_pi0 = false, other_solids = false;
   const int nvalues = CellTurgorState::restart_values(version);
@@ -812,6 +902,71 @@ int FixCellTurgor::pack_forward_comm(int n, int *list, double *buf, int, int *)
 void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
 {
   for (int k = 0; k < n; k++) atom->rmass[first + k] = buf[k];
+}
+
+/* ----------------------------------------------------------------------
+   per atom: the waiting transfer's relative mass change (0 for atoms that get none)
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::grow_arrays(int nmax)
+{
+  memory->grow(pending, nmax, "cell/turgor:pending");
+}
+
+void FixCellTurgor::copy_arrays(int i, int j, int)
+{
+  pending[j] = pending[i];
+}
+
+void FixCellTurgor::set_arrays(int i)
+{
+  pending[i] = 0.0;
+}
+
+int FixCellTurgor::pack_exchange(int i, double *buf)
+{
+  buf[0] = pending[i];
+  return 1;
+}
+
+int FixCellTurgor::unpack_exchange(int nlocal, double *buf)
+{
+  pending[nlocal] = buf[0];
+  return 1;
+}
+
+/* ----------------------------------------------------------------------
+   restart: the count of values (2) first, as every fix with per-atom restart data
+------------------------------------------------------------------------- */
+
+int FixCellTurgor::pack_restart(int i, double *buf)
+{
+  buf[0] = 2;
+  buf[1] = pending[i];
+  return 2;
+}
+
+void FixCellTurgor::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  pending[nlocal] = extra[nlocal][m + 1];
+}
+
+int FixCellTurgor::size_restart(int)
+{
+  return 2;
+}
+
+int FixCellTurgor::maxsize_restart()
+{
+  return 2;
+}
+
+double FixCellTurgor::memory_usage()
+{
+  return (double) atom->nmax * sizeof(double);
 }
 
 /* ---------------------------------------------------------------------- */

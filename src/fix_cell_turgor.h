@@ -33,12 +33,23 @@ class FixCellTurgor : public Fix {
   void init() override;
   void setup(int) override;
   void end_of_step() override;
+  void pre_force(int) override;
   double compute_vector(int) override;
   int modify_param(int, char **) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  double memory_usage() override;
 
   // the water of a cell as the last evaluation saw it (compute cell/props columns 18-22)
   struct Water {
@@ -71,6 +82,19 @@ class FixCellTurgor : public Fix {
   std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
+  // a transfer evaluated at the end of a step is applied before the next step's forces, so that
+  // the forces, densities and pressures of every step are those of its masses, and a run's setup
+  // recomputes the state the previous run ended with: per atom, the relative mass change to apply
+  // (migrates with the atom, in restart files); the water and the physical time it moves;
+  // whether any is waiting
+  double *pending = nullptr;
+  double moved_pending = 0.0, time_pending = 0.0;
+  bool any_pending = false;
+  bigint evaluated = -1;    // the step whose end evaluated the last transfer
+  // the state before that evaluation, to evaluate it again at a run's setup (not in restart files)
+  bigint saved = -1;
+  CellAccel::Saved accel_saved{};
+  double exchanged_saved = 0.0;
   double busiest;                       // the most cells one rank summed at the last evaluation
   double exposed_flux, exposed_area;    // air: mean vapour flux over the exposed area, the area
   // a cell's problem found on its home rank, stopping every rank (CellRegistry::settle)
@@ -88,10 +112,13 @@ class FixCellTurgor : public Fix {
   double water_exchanged;       // sum over transfers and junctions of |water moved| (kg)
   double exchange_net;          // sum over cells of the exchange's mass change, last transfer (kg)
   double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
-  int crossing;    // junctions between cells of different home ranks, at the last count
+  int crossing;     // junctions between cells of different home ranks, at the last count
+  int every = 1;    // N: a transfer every N steps
   bool network_stale = true;    // the network's junctions to set up again (new home ranks)
 
   void evaluate(bool transfer);
+  void apply_pending();
+  void transfer();
   void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
                 std::vector<double> &dmass);
   double modulus(int c) const;
