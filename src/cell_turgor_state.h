@@ -44,6 +44,7 @@ class CellTurgorState : protected Pointers {
   // the state before a transfer's evaluation, to evaluate it again (fix cell/turgor setup)
   void save() { saved = cells; }
   void restore() { cells = saved; }
+  void swap_saved() { cells.swap(saved); }
 
   // every rank's cell states: with everywhere, their restart values and the last evaluation's
   // turgor, psi_surface and rate on every rank (before the cells are found again at init)

@@ -232,11 +232,22 @@ void FixCellTurgor::init()
 {
   // every cell's state from where it was (the last run's home ranks, or the restart file on every
   // rank) to the cell's home rank of this run; cells no longer in the group stay on rank 0
-  std::vector<double> list;
+  std::vector<double> list, before;
   state.gather(true, list);
+  // the state before the last transfer's evaluation too, for setup to evaluate it again
+  if (saved >= 0) {
+    state.swap_saved();
+    state.gather(true, before);
+    state.swap_saved();
+  }
   cells->find_cells();
   cells->init();
   state.keep_home(list, cells->registry(), pi0);
+  if (saved >= 0) {
+    state.swap_saved();
+    state.keep_home(before, cells->registry(), pi0);
+    state.swap_saved();
+  }
   drive.init();
   lcc.resolve(lmp, "Fix cell/turgor: variable");
   if (junctions) junctions->init();
