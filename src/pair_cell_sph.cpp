@@ -38,8 +38,9 @@ using namespace LAMMPS_NS;
 
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
-// wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag
-static const int RESTART_VERSION = 10;
+// wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag;
+// 11: background auto's P_b now
+static const int RESTART_VERSION = 11;
 static const double TREF_DEFAULT = 298.15;
 
 static const char *const EOS_NAMES[] = {"linear", "tait"};
@@ -92,12 +93,12 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
     hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
     tensile(0.0), tensile_n(4), tensile_dp(0.0), stress(nullptr), pairw(nullptr), pairwj(nullptr),
-    background(0.0), background_auto(0), background_min(0.0), background_lag(-1.0), pc(nullptr),
-    wself(nullptr), invrho0(nullptr), eosk(nullptr), fluid(nullptr), viscous(0), shared{0.0, 0.0},
-    irho(-1), ipressure(-1), ih(-1), iomega(-1), hcap(nullptr), hscale(nullptr), dsum(nullptr),
-    dhdef(nullptr), dhdef0(nullptr), hbase(nullptr), boundary(nullptr), walls(0), wallsupport(0.0),
-    gamma_min(0.25), phidq(0.0), deficit(nullptr), adhesion(nullptr), adhk(nullptr), adhering(0),
-    adhp(nullptr), planeint(0.0), wallload(nullptr),
+    background(0.0), background_set(0), background_auto(0), background_min(0.0),
+    background_lag(-1.0), pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr),
+    fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1),
+    hcap(nullptr), hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
+    boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
+    adhesion(nullptr), adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), jump(nullptr),
     xnear(nullptr), slot(nullptr), refreshing(1), rebuilt(1), predicted(0), measuring(0),
@@ -1461,13 +1462,14 @@ void PairCellSPH::apply_eos()
     double sum[2];
     MPI_Allreduce(volume, sum, 2, MPI_DOUBLE, MPI_SUM, world);
     const double target = background_min - (sum[0] > 0.0 ? sum[1] / sum[0] : 0.0);
-    // P_b relaxes to it over the lag time, a step at a time; a run's setup takes the target
-    // itself, whatever changed between runs (eq. B4)
+    // P_b relaxes to it over the lag time, a step at a time (eq. B4), from the target at the
+    // style's first evaluation; a run's setup keeps it, so that a run split in two continues as one
     const double lag = background_lag >= 0.0 ? background_lag : AUTO_LAG * update->dt;
-    if (update->setupflag || lag == 0.0)
+    if (!background_set || lag == 0.0)
       background = target;
-    else
+    else if (!update->setupflag)
       background += std::min(1.0, update->dt / lag) * (target - background);
+    background_set = 1;
   }
   if (background == 0.0) return;
   for (int ii = 0; ii < inum; ii++) {
@@ -1623,6 +1625,7 @@ void PairCellSPH::settings(int narg, char **arg)
   tensile_dp = 0.0;
   background_in = CellQuantity();
   background = 0.0;
+  background_set = 0;
   background_auto = 0;
   background_min = 0.0;
   background_lag = -1.0;
@@ -2213,6 +2216,9 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&background_min, sizeof(double), 1, fp);
   // version 10: background auto lag
   fwrite(&background_lag, sizeof(double), 1, fp);
+  // version 11: background auto's P_b now, and whether it has a value
+  fwrite(&background, sizeof(double), 1, fp);
+  fwrite(&background_set, sizeof(int), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2283,6 +2289,12 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   background_lag = -1.0;
   if (comm->me == 0 && restart_version >= 10)
     utils::sfread(FLERR, &background_lag, sizeof(double), 1, fp, nullptr, error);
+  double pb = 0.0;
+  background_set = 0;
+  if (comm->me == 0 && restart_version >= 11) {
+    utils::sfread(FLERR, &pb, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &background_set, sizeof(int), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
   MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
@@ -2303,10 +2315,12 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   bname.resize(blen);
   if (blen > 0) MPI_Bcast(bname.data(), blen, MPI_CHAR, 0, world);
   background_in.name.assign(bname.begin(), bname.end());
-  background = background_in.value;
   MPI_Bcast(&background_auto, 1, MPI_INT, 0, world);
   MPI_Bcast(&background_min, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&background_lag, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&pb, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&background_set, 1, MPI_INT, 0, world);
+  background = background_auto && background_set ? pb : background_in.value;
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
   name.resize(len);
   if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);

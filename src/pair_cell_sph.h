@@ -86,6 +86,7 @@ class PairCellSPH : public Pair {
   // feels P alone (doc/pair_cell_sph.md, background pressure)
   CellQuantity background_in;    // P_b (Pa): a number or an equal-style variable
   double background;             // P_b of this step (Pa), 0 = off
+  int background_set;            // auto: P_b has a value (from the style's first evaluation on)
   int background_auto;           // background auto P_min: P_b relaxes to P_min - the fluid's mean P
   double background_min;         // P_min (Pa)
   double background_lag;         // auto: P_b relaxes over this time (s); < 0: AUTO_LAG steps

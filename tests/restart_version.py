@@ -6,7 +6,7 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 10 in
+  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 11 in
                                                the layout of version 5 (no tensile eps, n, dp; no
                                                wall adhesion W per type pair; no grow; no
                                                background)
@@ -100,7 +100,8 @@ def sph_to_version5(data, at, version):
     (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
     setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp;
     version 9: also the background P_b (double), its variable name's length (int) and name, the
-    auto flag (int) and P_min (double); version 10: also the auto lag (double)."""
+    auto flag (int) and P_min (double); version 10: also the auto lag (double); version 11: also
+    the auto P_b now (double) and whether it is set (int)."""
     (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
     start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
     end = start + 8 + 4 + 8 + (8 if version >= 8 else 0)
@@ -109,6 +110,8 @@ def sph_to_version5(data, at, version):
         end += 8 + 4 + blen + 4 + 8
     if version >= 10:
         end += 8
+    if version >= 11:
+        end += 8 + 4
     del data[start:end]
     if version >= 7:
         n = header_count(data, 16, 17, "NTYPES")
@@ -137,8 +140,8 @@ def main():
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5, 6):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
-            if version not in (6, 7, 8, 9, 10):
-                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 10")
+            if version not in (6, 7, 8, 9, 10, 11):
+                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 11")
             sph_to_version5(data, at, version)
             print(f"restart_version.py: {style} payload version {version} -> 5")
         elif style == "cell/bending" and mode == "older":
