@@ -46,14 +46,14 @@ int CellDrive::parse(int narg, char **arg, double tref)
   }
   if (key == "temp") {
     temp = CellQuantity::parse(lmp, value, command + ": temp");
-    if (temp.name.empty() && !(temp.value > 0.0))
-      error->all(FLERR, "{}: temperature T = {} K must be > 0", command, temp.value);
+    if (temp.name.empty()) check_temperature(temp.value, "");
     temp_set = 1;
     return 2;
   }
   drives += " " + key;
   if (key == "psi") {
     psi = CellQuantity::parse(lmp, value, command + ": psi");
+    if (psi.name.empty()) check_psi(psi.value, command, "");
     return 2;
   }
   if (key == "curve") {
@@ -78,9 +78,10 @@ int CellDrive::parse(int narg, char **arg, double tref)
   }
   // numbers are checked now, variables at every transfer (placeholders pass the check)
   const double t0 = air_t.name.empty() ? air_t.value : tref;
-  check_air(t0, air_rh.name.empty() ? air_rh.value : 1.0, air_hm.name.empty() ? air_hm.value : 0.0);
+  const double rh0 = air_rh.name.empty() ? air_rh.value : 1.0;
+  check_air(t0, rh0, air_hm.name.empty() ? air_hm.value : 0.0, "");
   if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
-    flow_transfer(t0, air_speed.value, air_length.value);
+    check_air(t0, rh0, flow_transfer(t0, air_speed.value, air_length.value), "");
   // optional 'area f' and 'surface group-ID', in either order
   while (used + 1 < narg) {
     const char *word = arg[used], *next = arg[used + 1];
@@ -135,6 +136,7 @@ void CellDrive::modify_psi(const char *arg)
     error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
                kind == AIR ? "air" : "curve");
   psi = CellQuantity::parse(lmp, arg, "Fix_modify cell/turgor: psi");
+  if (psi.name.empty()) check_psi(psi.value, "Fix_modify cell/turgor", "");
   psi.resolve(lmp, command + ": variable");
 }
 
@@ -142,32 +144,30 @@ void CellDrive::modify_psi(const char *arg)
 
 void CellDrive::evaluate(double &time, double advance)
 {
+  const std::string step = fmt::format(" (step {})", update->ntimestep);
   const double t = temp.get(lmp);
-  if (!(t > 0.0))
-    error->all(FLERR, "{}: temperature T = {} K must be > 0 (step {})", command, t,
-               update->ntimestep);
+  check_temperature(t, step);
   temperature = t;
   psi_ext = hm = rho_sat = rho_air = target = air_temperature = 0.0;
   if (kind == PSI) {
     psi_ext = psi.get(lmp);
+    check_psi(psi_ext, command, step);
   } else if (kind == AIR) {
     const double tair = air_t.get(lmp), rh = air_rh.get(lmp);
     hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
     mass_transfer = hm;
-    check_air(tair, rh, hm);
+    check_air(tair, rh, hm, step);
     if (cooling) check_cooling(tair);
-    if (!(t < CellWater::CRITICAL_T))
-      error->all(FLERR, "{}: temperature T = {} K must be below the critical point of water, {} K",
-                 command, t, CellWater::CRITICAL_T);
     air_temperature = tair;
     rho_air = rh * CellWater::saturation_density(tair);
     surface(t);
   } else {
     time += advance;
     target = curve.get(lmp);
-    if (!(target > 0.0))
-      error->all(FLERR, "{}: curve X/X0 = {} must be > 0 (physical time {} s)", command, target,
-                 time);
+    // the cell's water relative to its first: finite, and masses M0 X/X0 too
+    if (!(target > 0.0 && target <= CURVE_MAX))
+      error->all(FLERR, "{}: curve X/X0 = {} must be > 0 and <= 1e3 (physical time {} s, step {})",
+                 command, target, time, update->ntimestep);
   }
 }
 
@@ -280,18 +280,44 @@ double CellDrive::flow_transfer(double t, double u, double l) const
 }
 
 /* ----------------------------------------------------------------------
-   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, h_m >= 0
+   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <= HM_MAX; 'when'
+   ends the message
 ------------------------------------------------------------------------- */
 
-void CellDrive::check_air(double t, double rh, double hm) const
+void CellDrive::check_air(double t, double rh, double hm, const std::string &when) const
 {
-  if (!(t > 0.0)) error->all(FLERR, "{}: air temperature T = {} K must be > 0", command, t);
+  if (!(t > 0.0)) error->all(FLERR, "{}: air temperature T = {} K must be > 0{}", command, t, when);
   if (!(t < CellWater::CRITICAL_T))
     error->all(FLERR,
-               "{}: air temperature T = {} K must be below the critical point of water, {} K",
-               command, t, CellWater::CRITICAL_T);
+               "{}: air temperature T = {} K must be below the critical point of water, {} K{}",
+               command, t, CellWater::CRITICAL_T, when);
   if (!(rh > 0.0 && rh <= 1.0))
-    error->all(FLERR, "{}: relative humidity RH = {} must be in (0, 1]", command, rh);
-  if (!(hm >= 0.0))
-    error->all(FLERR, "{}: mass-transfer coefficient hm = {} m/s must be >= 0", command, hm);
+    error->all(FLERR, "{}: relative humidity RH = {} must be in (0, 1]{}", command, rh, when);
+  if (!(hm >= 0.0 && hm <= HM_MAX))
+    error->all(FLERR, "{}: mass-transfer coefficient hm = {} m/s must be >= 0 and <= 1e3 m/s{}",
+               command, hm, when);
+}
+
+/* ----------------------------------------------------------------------
+   the cells' temperature: 0 < T < the critical point of water; 'when' ends the message
+------------------------------------------------------------------------- */
+
+void CellDrive::check_temperature(double t, const std::string &when) const
+{
+  if (!(t > 0.0)) error->all(FLERR, "{}: temperature T = {} K must be > 0{}", command, t, when);
+  if (!(t < CellWater::CRITICAL_T))
+    error->all(FLERR, "{}: temperature T = {} K must be below the critical point of water, {} K{}",
+               command, t, CellWater::CRITICAL_T, when);
+}
+
+/* ----------------------------------------------------------------------
+   psi_ext finite and |psi_ext| <= PSI_MAX, above Kelvin's potential of any drying air
+   (doc/fix_cell_turgor.md); 'who' begins the message, 'when' ends it
+------------------------------------------------------------------------- */
+
+void CellDrive::check_psi(double value, const std::string &who, const std::string &when) const
+{
+  if (!(value >= -PSI_MAX && value <= PSI_MAX))
+    error->all(FLERR, "{}: water potential psi = {} Pa must be in [-1e9, 1e9] Pa{}", who, value,
+               when);
 }

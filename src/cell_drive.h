@@ -73,6 +73,9 @@ class CellDrive : protected Pointers {
     return area_fraction * (surface_group >= 0 ? surface_area : area);
   }
 
+  // the largest |psi_ext| (Pa), X/X0 of the curve and h_m (m/s) accepted (doc/fix_cell_turgor.md)
+  static constexpr double PSI_MAX = 1e9, CURVE_MAX = 1e3, HM_MAX = 1e3;
+
   int kind;
   int cooling;             // 'cooling yes': T is the surface temperature of the heat balance
   int surface_group;       // 'surface': air only on the triangles of this group's atoms, or -1
@@ -91,7 +94,9 @@ class CellDrive : protected Pointers {
   double area_fraction;           // share of the wall area in contact with the air
   double hm, rho_sat, rho_air;    // h_m, rho_v,sat(T) and RH rho_v,sat(T_air) of the evaluation
 
-  void check_air(double t, double rh, double hm) const;
+  void check_air(double t, double rh, double hm, const std::string &when) const;
+  void check_psi(double value, const std::string &who, const std::string &when) const;
+  void check_temperature(double t, const std::string &when) const;
   void check_cooling(double t) const;
   void surface(double t);
   double flow_transfer(double t, double u, double l) const;
