@@ -19,8 +19,7 @@ using namespace LAMMPS_NS;
 
 CellAccel::CellAccel(LAMMPS *lmp) :
     Pointers(lmp), value(1.0), automatic(0), pending(0), lag_estimate(0.0), lag_error(0.0),
-    every(0), hold(0), open_samples(0), sealed_samples(0), tol(0.0), lo(1.0), hi(HUGE_VAL),
-    start(0.0)
+    every(0), hold(0), open_samples(0), sealed_samples(0), tol(0.0), lo(1.0), hi(MAX), start(0.0)
 {
 }
 
@@ -31,7 +30,8 @@ int CellAccel::parse(int narg, char **arg, const std::string &command)
   if (narg < 1) error->all(FLERR, "{}: missing value after 'accel'", command);
   if (strcmp(arg[0], "auto") != 0) {
     const double a = utils::numeric(FLERR, arg[0], false, lmp);
-    if (a <= 0.0) error->all(FLERR, "{}: accel = {} must be > 0", command, a);
+    if (!(a > 0.0 && a <= MAX))
+      error->all(FLERR, "{}: accel = {} must be > 0 and <= 1e15", command, a);
     value = a;
     automatic = pending = 0;
     return 1;
@@ -40,7 +40,7 @@ int CellAccel::parse(int narg, char **arg, const std::string &command)
   const double t = utils::numeric(FLERR, arg[1], false, lmp);
   if (!(t > 0.0 && t < 1.0))
     error->all(FLERR, "{}: accel auto tolerance = {} must be in (0, 1)", command, t);
-  double min = 1.0, max = HUGE_VAL, first = 0.0;
+  double min = 1.0, max = MAX, first = 0.0;
   int open = 0, sealed = 0, used = 2;
   while (used + 1 < narg) {
     const std::string key = arg[used];
@@ -52,7 +52,8 @@ int CellAccel::parse(int narg, char **arg, const std::string &command)
       (key == "every" ? open : sealed) = n;
     } else {
       const double a = utils::numeric(FLERR, arg[used + 1], false, lmp);
-      if (!(a > 0.0)) error->all(FLERR, "{}: accel auto {} = {} must be > 0", command, key, a);
+      if (!(a > 0.0 && a <= MAX))
+        error->all(FLERR, "{}: accel auto {} = {} must be > 0 and <= 1e15", command, key, a);
       (key == "min" ? min : key == "max" ? max : first) = a;
     }
     used += 2;

@@ -24,6 +24,9 @@ class CellAccel : protected Pointers {
   enum Probe { Y0, ST, SY, STT, STY, SYY, RATE, COND, SY2, SYY2, NPROBE };
   // global restart values: accel if auto (else 0), open and sealed samples, lag and its error
   static constexpr int RESTART_VALUES = 5;
+  // the largest accel accepted: also of accel auto min, max (default) and start
+  // (doc/fix_cell_turgor.md)
+  static constexpr double MAX = 1e15;
 
   CellAccel(class LAMMPS *);
 

@@ -10,6 +10,7 @@
 #include "utils.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -111,6 +112,8 @@ double CellParams::number(const std::string &key) const
   const double v = strtod(e.value.c_str(), &end);
   if (*end != '\0' || errno != 0 || e.value.empty())
     error->all(FLERR, "{}: {} = '{}' is not a number", where(e), key, e.value);
+  if (!std::isfinite(v))
+    error->all(FLERR, "{}: {} = '{}' is not a finite number", where(e), key, e.value);
   return v;
 }
 
@@ -125,5 +128,13 @@ double CellParams::nonnegative(const std::string &key) const
 {
   const double v = number(key);
   if (!(v >= 0.0)) error->all(FLERR, "{}: {} = {} must be >= 0", where(find(key)), key, v);
+  return v;
+}
+
+double CellParams::nonnegative(const std::string &key, double max, const std::string &limit) const
+{
+  const double v = number(key);
+  if (!(v >= 0.0 && v <= max))
+    error->all(FLERR, "{}: {} = {} must be >= 0 and <= {}", where(find(key)), key, v, limit);
   return v;
 }

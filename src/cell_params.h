@@ -25,6 +25,8 @@ class CellParams : protected Pointers {
   double number(const std::string &key) const;
   double positive(const std::string &key) const;       // > 0
   double nonnegative(const std::string &key) const;    // >= 0
+  // >= 0 and <= max, 'limit' the bound as the message gives it (e.g. "1e6 J/mol")
+  double nonnegative(const std::string &key, double max, const std::string &limit) const;
 
  private:
   struct Entry {

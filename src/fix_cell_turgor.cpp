@@ -41,6 +41,10 @@ using MathConst::MY_PI;
 // -version; 1: none
 static const int RESTART_VERSION = 6;
 
+// the largest conductance L_P or L_cc (m s^-1 Pa^-1) and activation energy Ea (J/mol) accepted, far
+// above any membrane's (doc/fix_cell_turgor.md); the messages give them as 1e3 and 1e6
+static constexpr double CONDUCTANCE_MAX = 1e3, EA_MAX = 1e6;
+
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
 // between cells (5), water and physical time of the waiting transfer, the step of the last
@@ -94,8 +98,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       used = n;
     } else if (key == "Ea") {
       ea = utils::numeric(FLERR, value, false, lmp);
-      if (ea < 0.0)
-        error->all(FLERR, "Fix cell/turgor: activation energy Ea = {} must be >= 0", ea);
+      if (!(ea >= 0.0 && ea <= EA_MAX))
+        error->all(FLERR,
+                   "Fix cell/turgor: activation energy Ea = {} must be >= 0 and <= 1e6 J/mol", ea);
     } else if (key == "rhow") {
       rhow = utils::numeric(FLERR, value, false, lmp);
       if (rhow <= 0.0)
@@ -108,9 +113,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                    v[0], v[1]);
       lcc_file = strcmp(v[0], "file") == 0;
       if (!lcc_file) lcc = CellQuantity::parse(lmp, v[0], "Fix cell/turgor: exchange L_cc");
-      if (!lcc_file && !lcc.is_variable() && lcc.value < 0.0)
-        error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0",
-                   lcc.value);
+      if (!lcc_file && !lcc.is_variable()) check_lcc(lcc.value, "");
       bondtype = utils::inumeric(FLERR, v[2], false, lmp);
       used = 4;
       if (iarg + 5 < narg && strcmp(arg[iarg + 4], "areas") == 0) {
@@ -135,12 +138,13 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       used = n;
     } else if (key == "file") {
       CellParams params(lmp, value, "Fix cell/turgor");
-      lp = params.nonnegative("turgor_LP");
+      lp = params.nonnegative("turgor_LP", CONDUCTANCE_MAX, "1e3 m s^-1 Pa^-1");
       pi0 = params.nonnegative("turgor_pi0");
       lp_set = pi0_set = true;
       // optional drying keys (doc/fix_cell_turgor.md)
-      if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea");
-      if (params.has("turgor_Lcc")) file_lcc = params.nonnegative("turgor_Lcc");
+      if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea", EA_MAX, "1e6 J/mol");
+      if (params.has("turgor_Lcc"))
+        file_lcc = params.nonnegative("turgor_Lcc", CONDUCTANCE_MAX, "1e3 m s^-1 Pa^-1");
       osmotic_model.read(params, value);
     } else if (key == "turgor") {
       measure = value;
@@ -157,7 +161,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     iarg += used;
   }
   if (!lp_set) error->all(FLERR, "Fix cell/turgor: wall permeability not set: give 'LP value'");
-  if (lp < 0.0) error->all(FLERR, "Fix cell/turgor: wall permeability LP = {} must be >= 0", lp);
+  check_lp(lp, "Fix cell/turgor");
   if (!pi0_set) error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
   drive.check(osmotic_model.tref);
@@ -593,9 +597,7 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
   const std::vector<int> &home = registry.home_cells();
   const bool counted = junctions->gather(registry, !transfer);
   const double l = lcc.get(lmp);
-  if (!(l >= 0.0))
-    error->all(FLERR, "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 (step {})",
-               l, update->ntimestep);
+  check_lcc(l, fmt::format(" (step {})", update->ntimestep));
   // the junctions set up again when they were counted again or the home ranks changed (init)
   if (counted || network_stale) {
     std::vector<CellNetwork::Edge> edges;
@@ -814,8 +816,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
   }
   const double value = key == "psi" ? 0.0 : utils::numeric(FLERR, arg[1], false, lmp);
   if (key == "LP") {
-    if (value < 0.0)
-      error->all(FLERR, "Fix_modify cell/turgor: wall permeability LP = {} must be >= 0", value);
+    check_lp(value, "Fix_modify cell/turgor");
     lp = value;
   } else if (key == "psi") {
     drive.modify_psi(arg[1]);
@@ -995,4 +996,28 @@ const CellRegistry &FixCellTurgor::registry() const
 double FixCellTurgor::arrhenius_factor(double t) const
 {
   return ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
+}
+
+/* ----------------------------------------------------------------------
+   0 <= L_P <= CONDUCTANCE_MAX; 'who' begins the message
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::check_lp(double value, const std::string &who) const
+{
+  if (!(value >= 0.0 && value <= CONDUCTANCE_MAX))
+    error->all(FLERR, "{}: wall permeability LP = {} must be >= 0 and <= 1e3 m s^-1 Pa^-1", who,
+               value);
+}
+
+/* ----------------------------------------------------------------------
+   0 <= L_cc <= CONDUCTANCE_MAX; 'when' ends the message
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::check_lcc(double value, const std::string &when) const
+{
+  if (!(value >= 0.0 && value <= CONDUCTANCE_MAX))
+    error->all(FLERR,
+               "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 and <= 1e3 m "
+               "s^-1 Pa^-1{}",
+               value, when);
 }

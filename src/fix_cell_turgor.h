@@ -122,6 +122,8 @@ class FixCellTurgor : public Fix {
   void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
                 std::vector<double> &dmass);
   double modulus(int c) const;
+  void check_lp(double value, const std::string &who) const;
+  void check_lcc(double value, const std::string &when) const;
   double offset_time() const;
   bool check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi, double demand);
   double flux_turgor(int c, CellTurgorState::Cell &s, bool advance);
