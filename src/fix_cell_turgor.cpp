@@ -72,10 +72,11 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (every <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", every);
 
   bool lp_set = false, pi0_set = false;
-  int bondtype = 0;
-  std::string areas;         // 'exchange ... areas FILE'
-  bool lcc_file = false;     // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
-  double file_lcc = -1.0;    // turgor_Lcc of the last 'file', -1 if none
+  int bondtype = 0;           // 'exchange ... bondtype N'
+  bool exchanging = false;    // 'exchange' given
+  std::string areas;          // 'exchange ... areas FILE'
+  bool lcc_file = false;      // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
+  double file_lcc = -1.0;     // turgor_Lcc of the last 'file', -1 if none
   std::string measure = "wall";
   int iarg = 4;
   // the values after keyword key: n of them, or stop
@@ -115,6 +116,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       if (!lcc_file) lcc = CellQuantity::parse(lmp, v[0], "Fix cell/turgor: exchange L_cc");
       if (!lcc_file && !lcc.is_variable()) check_lcc(lcc.value, "");
       bondtype = utils::inumeric(FLERR, v[2], false, lmp);
+      exchanging = true;
       used = 4;
       if (iarg + 5 < narg && strcmp(arg[iarg + 4], "areas") == 0) {
         areas = arg[iarg + 5];
@@ -178,18 +180,19 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                  "parameter file: give 'file name' with that key");
     lcc = CellQuantity{file_lcc, "", -1};
   }
-  if (bondtype && drive.kind == CellDrive::CURVE)
+  if (exchanging && drive.kind == CellDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
                "cell's water)");
-  if (bondtype && accel.automatic)
+  if (exchanging && accel.automatic)
     error->all(FLERR,
                "Fix cell/turgor: exchange does not work with accel auto: give accel a number");
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
   if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
-  if (bondtype) {
+  if (exchanging) {
+    // bond type 0 too is out of range there
     junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
     network = std::make_unique<CellNetwork>(world);
   }
