@@ -4,6 +4,7 @@
 
 #include "cell_params.h"
 
+#include "cell_limits.h"
 #include "comm.h"
 #include "error.h"
 #include "update.h"
@@ -126,4 +127,16 @@ double CellParams::nonnegative(const std::string &key) const
   const double v = number(key);
   if (!(v >= 0.0)) error->all(FLERR, "{}: {} = {} must be >= 0", where(find(key)), key, v);
   return v;
+}
+
+double CellParams::positive(const std::string &key, double max, const std::string &unit) const
+{
+  return CellLimits::within(error, where(find(key)) + ": " + key, positive(key), 0.0, max, unit,
+                            true);
+}
+
+double CellParams::nonnegative(const std::string &key, double max, const std::string &unit) const
+{
+  return CellLimits::within(error, where(find(key)) + ": " + key, nonnegative(key), 0.0, max, unit,
+                            false);
 }
