@@ -23,9 +23,9 @@ namespace CellLimits {
   constexpr double GAMMA_MAX = 1.0;
 
   // the middle lamella (bond cell/lamella; keys lamella_K, lamella_sigma, lamella_area)
-  constexpr double LAMELLA_K_MAX = 1e20;        // stiffness per area K, Pa/m (apple: 1e13)
-  constexpr double LAMELLA_SIGMA_MAX = 1e10;    // strength sigma_c, Pa (apple: 3e5)
-  constexpr double LAMELLA_AREA_MAX = 1e-6;     // junction area per bond A, m^2 (apple: 6.45e-11)
+  // (the strength sigma_c has none: a strength beyond any load is a bond that never breaks)
+  constexpr double LAMELLA_K_MAX = 1e20;       // stiffness per area K, Pa/m (apple: 1e13)
+  constexpr double LAMELLA_AREA_MAX = 1e-6;    // junction area per bond A, m^2 (apple: 6.45e-11)
 
   // the cell fluid (pair cell/sph; keys sph_rho0, sph_K, sph_mu, sph_h)
   constexpr double SPH_RHO0_MAX = 1e5;    // reference density rho0, kg/m^3 (water: 1000)
