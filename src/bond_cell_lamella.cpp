@@ -10,6 +10,7 @@
 
 #include "atom.h"
 #include "cell_bond.h"
+#include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "comm.h"
@@ -153,10 +154,10 @@ void BondCellLamella::coeff(int narg, char **arg)
                  "file <parameter file>', got {} args",
                  narg);
     CellParams params(lmp, arg[2], "bond_coeff cell/lamella");
-    k_one = params.positive("lamella_K");
+    k_one = params.positive("lamella_K", CellLimits::LAMELLA_K_MAX, "Pa/m");
     s_one = params.positive("lamella_sigma");
-    a_one = params.positive("lamella_area");
-    g_one = params.nonnegative("lamella_gamma");
+    a_one = params.positive("lamella_area", CellLimits::LAMELLA_AREA_MAX, "m^2");
+    g_one = params.nonnegative("lamella_gamma", CellLimits::GAMMA_MAX, "N s/m");
   } else {
     if (narg >= 2 && !utils::is_double(arg[1]))
       error->all(FLERR,
@@ -181,6 +182,14 @@ void BondCellLamella::coeff(int narg, char **arg)
                  a_one);
     if (g_one < 0.0)
       error->all(FLERR, "Bond_coeff cell/lamella: damping gamma = {} must be >= 0", g_one);
+    // the ranges keep K A finite; sigma_c has no upper bound (doc/bond_cell_lamella.md, Ranges)
+    const std::string c = "Bond_coeff cell/lamella: ";
+    CellLimits::within(error, c + "stiffness K", k_one, 0.0, CellLimits::LAMELLA_K_MAX, "Pa/m",
+                       true);
+    CellLimits::within(error, c + "junction area per bond A", a_one, 0.0,
+                       CellLimits::LAMELLA_AREA_MAX, "m^2", true);
+    CellLimits::within(error, c + "damping gamma", g_one, 0.0, CellLimits::GAMMA_MAX, "N s/m",
+                       false);
   }
 
   for (int i = ilo; i <= ihi; i++) {

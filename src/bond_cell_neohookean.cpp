@@ -9,6 +9,7 @@
 
 #include "atom.h"
 #include "cell_bond.h"
+#include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "comm.h"
@@ -180,9 +181,9 @@ void BondCellNeoHookean::coeff(int narg, char **arg)
   int law_one = NEOHOOKEAN;
   if (narg == 3 && strcmp(arg[1], "file") == 0) {
     CellParams params(lmp, arg[2], "bond_coeff cell/neohookean");
-    g_one = params.positive("wall_G");
-    t_one = params.positive("wall_t0");
-    gamma_one = params.nonnegative("wall_gamma");
+    g_one = params.positive("wall_G", CellLimits::WALL_G_MAX, "Pa");
+    t_one = params.positive("wall_t0", CellLimits::WALL_T0_MAX, "m");
+    gamma_one = params.nonnegative("wall_gamma", CellLimits::GAMMA_MAX, "N s/m");
     if (params.has("wall_law")) law_one = parse_law(params.word("wall_law"));
   } else {
     if (narg != 4 && narg != 6)
@@ -200,6 +201,14 @@ void BondCellNeoHookean::coeff(int narg, char **arg)
       error->all(FLERR, "Bond_coeff cell/neohookean: wall thickness t0 = {} must be > 0", t_one);
     if (gamma_one < 0.0)
       error->all(FLERR, "Bond_coeff cell/neohookean: damping gamma = {} must be >= 0", gamma_one);
+    // the ranges keep G t0 finite (doc/bond_cell_neohookean.md, Ranges)
+    const std::string c = "Bond_coeff cell/neohookean: ";
+    CellLimits::within(error, c + "shear modulus G", g_one, 0.0, CellLimits::WALL_G_MAX, "Pa",
+                       true);
+    CellLimits::within(error, c + "wall thickness t0", t_one, 0.0, CellLimits::WALL_T0_MAX, "m",
+                       true);
+    CellLimits::within(error, c + "damping gamma", gamma_one, 0.0, CellLimits::GAMMA_MAX, "N s/m",
+                       false);
     if (narg == 6) {
       if (strcmp(arg[4], "law") != 0)
         error->all(FLERR, "Bond_coeff cell/neohookean: unknown keyword '{}' (expected 'law')",

@@ -8,6 +8,7 @@
 #include "cell_drive.h"
 
 #include "cell_args.h"
+#include "cell_limits.h"
 #include "error.h"
 #include "group.h"
 #include "update.h"
@@ -165,7 +166,7 @@ void CellDrive::evaluate(double &time, double advance)
     time += advance;
     target = curve.get(lmp);
     // the cell's water relative to its first: finite, and masses M0 X/X0 too
-    if (!(target > 0.0 && target <= CURVE_MAX))
+    if (!(target > 0.0 && target <= CellLimits::CURVE_MAX))
       error->all(FLERR, "{}: curve X/X0 = {} must be > 0 and <= 1e3 (physical time {} s, step {})",
                  command, target, time, update->ntimestep);
   }
@@ -280,7 +281,7 @@ double CellDrive::flow_transfer(double t, double u, double l) const
 }
 
 /* ----------------------------------------------------------------------
-   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <= HM_MAX; 'when'
+   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <= CellLimits::HM_MAX; 'when'
    ends the message
 ------------------------------------------------------------------------- */
 
@@ -293,7 +294,7 @@ void CellDrive::check_air(double t, double rh, double hm, const std::string &whe
                command, t, CellWater::CRITICAL_T, when);
   if (!(rh > 0.0 && rh <= 1.0))
     error->all(FLERR, "{}: relative humidity RH = {} must be in (0, 1]{}", command, rh, when);
-  if (!(hm >= 0.0 && hm <= HM_MAX))
+  if (!(hm >= 0.0 && hm <= CellLimits::HM_MAX))
     error->all(FLERR, "{}: mass-transfer coefficient hm = {} m/s must be >= 0 and <= 1e3 m/s{}",
                command, hm, when);
 }
@@ -311,13 +312,13 @@ void CellDrive::check_temperature(double t, const std::string &when) const
 }
 
 /* ----------------------------------------------------------------------
-   psi_ext finite and |psi_ext| <= PSI_MAX, above Kelvin's potential of any drying air
+   psi_ext finite and |psi_ext| <= CellLimits::PSI_MAX, above Kelvin's potential of any drying air
    (doc/fix_cell_turgor.md); 'who' begins the message, 'when' ends it
 ------------------------------------------------------------------------- */
 
 void CellDrive::check_psi(double value, const std::string &who, const std::string &when) const
 {
-  if (!(value >= -PSI_MAX && value <= PSI_MAX))
+  if (!(value >= -CellLimits::PSI_MAX && value <= CellLimits::PSI_MAX))
     error->all(FLERR, "{}: water potential psi = {} Pa must be in [-1e9, 1e9] Pa{}", who, value,
                when);
 }

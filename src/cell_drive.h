@@ -74,7 +74,6 @@ class CellDrive : protected Pointers {
   }
 
   // the largest |psi_ext| (Pa), X/X0 of the curve and h_m (m/s) accepted (doc/fix_cell_turgor.md)
-  static constexpr double PSI_MAX = 1e9, CURVE_MAX = 1e3, HM_MAX = 1e3;
 
   int kind;
   int cooling;             // 'cooling yes': T is the surface temperature of the heat balance

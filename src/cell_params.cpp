@@ -4,6 +4,7 @@
 
 #include "cell_params.h"
 
+#include "cell_limits.h"
 #include "comm.h"
 #include "error.h"
 #include "update.h"
@@ -131,10 +132,14 @@ double CellParams::nonnegative(const std::string &key) const
   return v;
 }
 
-double CellParams::nonnegative(const std::string &key, double max, const std::string &limit) const
+double CellParams::positive(const std::string &key, double max, const std::string &unit) const
 {
-  const double v = number(key);
-  if (!(v >= 0.0 && v <= max))
-    error->all(FLERR, "{}: {} = {} must be >= 0 and <= {}", where(find(key)), key, v, limit);
-  return v;
+  return CellLimits::within(error, where(find(key)) + ": " + key, positive(key), 0.0, max, unit,
+                            true);
+}
+
+double CellParams::nonnegative(const std::string &key, double max, const std::string &unit) const
+{
+  return CellLimits::within(error, where(find(key)) + ": " + key, nonnegative(key), 0.0, max, unit,
+                            false);
 }

@@ -25,8 +25,9 @@ class CellParams : protected Pointers {
   double number(const std::string &key) const;
   double positive(const std::string &key) const;       // > 0
   double nonnegative(const std::string &key) const;    // >= 0
-  // >= 0 and <= max, 'limit' the bound as the message gives it (e.g. "1e6 J/mol")
-  double nonnegative(const std::string &key, double max, const std::string &limit) const;
+  // (0, max] and [0, max]: the error names the file, the line, the key and the range in unit
+  double positive(const std::string &key, double max, const std::string &unit) const;
+  double nonnegative(const std::string &key, double max, const std::string &unit) const;
 
  private:
   struct Entry {

@@ -9,6 +9,7 @@
 #include "dihedral_cell_bending.h"
 
 #include "atom.h"
+#include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "cell_triangle.h"
@@ -246,8 +247,8 @@ void DihedralCellBending::coeff(int narg, char **arg)
   double g_one, t_one;
   if (strcmp(arg[1], "file") == 0) {
     CellParams params(lmp, arg[2], "dihedral_coeff cell/bending");
-    g_one = params.positive("wall_G");
-    t_one = params.positive("wall_t0");
+    g_one = params.positive("wall_G", CellLimits::WALL_G_MAX, "Pa");
+    t_one = params.positive("wall_t0", CellLimits::WALL_T0_MAX, "m");
   } else {
     g_one = utils::numeric(FLERR, arg[1], false, lmp);
     t_one = utils::numeric(FLERR, arg[2], false, lmp);
@@ -255,6 +256,12 @@ void DihedralCellBending::coeff(int narg, char **arg)
       error->all(FLERR, "Dihedral_coeff cell/bending: shear modulus G = {} must be > 0", g_one);
     if (t_one <= 0.0)
       error->all(FLERR, "Dihedral_coeff cell/bending: wall thickness t0 = {} must be > 0", t_one);
+    // the ranges keep kappa = G t0^3 / 3 finite (doc/dihedral_cell_bending.md, Ranges)
+    const std::string c = "Dihedral_coeff cell/bending: ";
+    CellLimits::within(error, c + "shear modulus G", g_one, 0.0, CellLimits::WALL_G_MAX, "Pa",
+                       true);
+    CellLimits::within(error, c + "wall thickness t0", t_one, 0.0, CellLimits::WALL_T0_MAX, "m",
+                       true);
   }
   int ref_one = XREF;
   int form_one = COS;

@@ -13,6 +13,7 @@
 #include "cell_args.h"
 #include "cell_compat.h"
 #include "cell_junctions.h"
+#include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_reduce.h"
 #include "cell_restart.h"
@@ -43,7 +44,6 @@ static const int RESTART_VERSION = 6;
 
 // the largest conductance L_P or L_cc (m s^-1 Pa^-1) and activation energy Ea (J/mol) accepted, far
 // above any membrane's (doc/fix_cell_turgor.md); the messages give them as 1e3 and 1e6
-static constexpr double CONDUCTANCE_MAX = 1e3, EA_MAX = 1e6;
 
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
@@ -99,7 +99,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       used = n;
     } else if (key == "Ea") {
       ea = utils::numeric(FLERR, value, false, lmp);
-      if (!(ea >= 0.0 && ea <= EA_MAX))
+      if (!(ea >= 0.0 && ea <= CellLimits::EA_MAX))
         error->all(FLERR,
                    "Fix cell/turgor: activation energy Ea = {} must be >= 0 and <= 1e6 J/mol", ea);
     } else if (key == "rhow") {
@@ -140,13 +140,14 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
       used = n;
     } else if (key == "file") {
       CellParams params(lmp, value, "Fix cell/turgor");
-      lp = params.nonnegative("turgor_LP", CONDUCTANCE_MAX, "1e3 m s^-1 Pa^-1");
+      lp = params.nonnegative("turgor_LP", CellLimits::CONDUCTANCE_MAX, "m s^-1 Pa^-1");
       pi0 = params.nonnegative("turgor_pi0");
       lp_set = pi0_set = true;
       // optional drying keys (doc/fix_cell_turgor.md)
-      if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea", EA_MAX, "1e6 J/mol");
+      if (params.has("turgor_Ea"))
+        ea = params.nonnegative("turgor_Ea", CellLimits::EA_MAX, "J/mol");
       if (params.has("turgor_Lcc"))
-        file_lcc = params.nonnegative("turgor_Lcc", CONDUCTANCE_MAX, "1e3 m s^-1 Pa^-1");
+        file_lcc = params.nonnegative("turgor_Lcc", CellLimits::CONDUCTANCE_MAX, "m s^-1 Pa^-1");
       osmotic_model.read(params, value);
     } else if (key == "turgor") {
       measure = value;
@@ -1002,23 +1003,23 @@ double FixCellTurgor::arrhenius_factor(double t) const
 }
 
 /* ----------------------------------------------------------------------
-   0 <= L_P <= CONDUCTANCE_MAX; 'who' begins the message
+   0 <= L_P <= CellLimits::CONDUCTANCE_MAX; 'who' begins the message
 ------------------------------------------------------------------------- */
 
 void FixCellTurgor::check_lp(double value, const std::string &who) const
 {
-  if (!(value >= 0.0 && value <= CONDUCTANCE_MAX))
+  if (!(value >= 0.0 && value <= CellLimits::CONDUCTANCE_MAX))
     error->all(FLERR, "{}: wall permeability LP = {} must be >= 0 and <= 1e3 m s^-1 Pa^-1", who,
                value);
 }
 
 /* ----------------------------------------------------------------------
-   0 <= L_cc <= CONDUCTANCE_MAX; 'when' ends the message
+   0 <= L_cc <= CellLimits::CONDUCTANCE_MAX; 'when' ends the message
 ------------------------------------------------------------------------- */
 
 void FixCellTurgor::check_lcc(double value, const std::string &when) const
 {
-  if (!(value >= 0.0 && value <= CONDUCTANCE_MAX))
+  if (!(value >= 0.0 && value <= CellLimits::CONDUCTANCE_MAX))
     error->all(FLERR,
                "Fix cell/turgor: cell-to-cell conductance L_cc = {} must be >= 0 and <= 1e3 m "
                "s^-1 Pa^-1{}",

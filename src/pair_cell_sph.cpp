@@ -12,6 +12,7 @@
 
 #include "atom.h"
 #include "cell_compat.h"
+#include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_restart.h"
 #include "cell_triangle.h"
@@ -1716,6 +1717,8 @@ void PairCellSPH::settings(int narg, char **arg)
         if (!(background_min >= 0.0))
           error->all(FLERR, "Pair style cell/sph: background auto P_min = {} Pa must be >= 0",
                      background_min);
+        CellLimits::within(error, "Pair style cell/sph: background auto P_min", background_min, 0.0,
+                           CellLimits::PRESSURE_MAX, "Pa", false);
         iarg++;
         // after 'auto P_min' (arg[iarg + 1]): optionally 'lag T'
         if (iarg + 2 < narg && strcmp(arg[iarg + 2], "lag") == 0) {
@@ -1733,6 +1736,9 @@ void PairCellSPH::settings(int narg, char **arg)
         if (!std::isfinite(background))
           error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa is not a number",
                      background);
+        if (!background_in.is_variable())
+          CellLimits::within(error, "Pair style cell/sph: background P_b", background,
+                             -CellLimits::PRESSURE_MAX, CellLimits::PRESSURE_MAX, "Pa", false);
       }
     } else if (strcmp(arg[iarg], "grow") == 0) {
       grow = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -1795,13 +1801,15 @@ void PairCellSPH::coeff(int narg, char **arg)
                    "Pair_coeff cell/sph: wall adhesion W = {} J/m^2 must be >= 0 (the work of "
                    "adhesion per wall area)",
                    adhesion_one);
+      CellLimits::within(error, "Pair_coeff cell/sph: wall adhesion W", adhesion_one, 0.0,
+                         CellLimits::ADHESION_MAX, "J/m^2", false);
     }
   } else if (narg == 4 && strcmp(arg[2], "file") == 0) {
     CellParams params(lmp, arg[3], "pair_coeff cell/sph");
-    rho0_one = params.positive("sph_rho0");
-    bulk_one = params.positive("sph_K");
-    mu_one = params.nonnegative("sph_mu");
-    h_one = params.positive("sph_h");
+    rho0_one = params.positive("sph_rho0", CellLimits::SPH_RHO0_MAX, "kg/m^3");
+    bulk_one = params.positive("sph_K", CellLimits::SPH_K_MAX, "Pa");
+    mu_one = params.nonnegative("sph_mu", CellLimits::SPH_MU_MAX, "Pa s");
+    h_one = params.positive("sph_h", CellLimits::SPH_H_MAX, "m");
     if (params.has("sph_kernel") && params.word("sph_kernel") != CellKernel::NAMES[kernel])
       error->all(FLERR,
                  "Pair_coeff cell/sph: {} sets sph_kernel = {} but pair_style cell/sph uses "
@@ -1826,6 +1834,15 @@ void PairCellSPH::coeff(int narg, char **arg)
       error->all(FLERR, "Pair_coeff cell/sph: viscosity mu = {} must be >= 0", mu_one);
     if (h_one <= 0.0)
       error->all(FLERR, "Pair_coeff cell/sph: smoothing length h = {} must be > 0", h_one);
+    const std::string c = "Pair_coeff cell/sph: ";
+    CellLimits::within(error, c + "reference density rho0", rho0_one, 0.0, CellLimits::SPH_RHO0_MAX,
+                       "kg/m^3", true);
+    CellLimits::within(error, c + "bulk modulus K", bulk_one, 0.0, CellLimits::SPH_K_MAX, "Pa",
+                       true);
+    CellLimits::within(error, c + "viscosity mu", mu_one, 0.0, CellLimits::SPH_MU_MAX, "Pa s",
+                       false);
+    CellLimits::within(error, c + "smoothing length h", h_one, 0.0, CellLimits::SPH_H_MAX, "m",
+                       true);
   }
 
   int count = 0;
@@ -2126,6 +2143,12 @@ void PairCellSPH::update_background()
                "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} is not a "
                "number",
                background, background_in.name, update->ntimestep);
+  if (std::fabs(background) > CellLimits::PRESSURE_MAX)
+    error->all(FLERR,
+               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} must be in "
+               "[{:g}, {:g}] Pa",
+               background, background_in.name, update->ntimestep, -CellLimits::PRESSURE_MAX,
+               CellLimits::PRESSURE_MAX);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -31,6 +31,10 @@ constexpr const char *kUsage =
     "               [--margin F=0.5] [--ellipsoid A:B:C | --elongation E]\n"
     "               [--map affine|conformal] [--fluid-lattice cubic|shells] [--dihedrals]\n"
     "               --out FILE.data\n"
+    "--gap G: the fluid lattice at least G inside the wall (default DX/2), DX/4 <= G < the "
+    "smallest\n"
+    "            radius (semi-axis), DX the fluid spacing; without fluid (--nfluid 0) 0 <= G.\n"
+    "--wall-mass MW: 0 < MW <= rho0 4/3 pi R^3 (the water filling a cell); --rho0: at most 1e5.\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
     "--ellipsoid A:B:C: semi-axes along x, y, z (replaces --radius); --elongation E: prolate along "
@@ -199,10 +203,13 @@ void validate(const Options &o)
   require(o.nwall >= 4 && o.nwall <= 10000000, "--nwall must be in [4, 1e7]");
   require(o.nfluid >= 0 && o.nfluid <= 100000000, "--nfluid must be in [0, 1e8]");
   require(!o.dx || *o.dx > 0, "--dx must be positive");
-  require(!o.gap || (*o.gap >= 0 && *o.gap < o.radius * o.shape.minCoeff() * (1 - o.spread)),
-          "--gap must be in [0, smallest radius)");
-  require(o.rho0 > 0, "--rho0 must be positive");
-  require(!o.wallMass || *o.wallMass > 0, "--wall-mass must be positive");
+  require(o.rho0 > 0 && o.rho0 <= kRho0Max,
+          "--rho0 must be in (0, " + show(kRho0Max) + "] kg/m^3, not " + show(o.rho0));
+  // a wall particle at most as heavy as the water filling a cell of radius R
+  const double cellMass = o.rho0 * 4.0 / 3.0 * kPi * o.radius * o.radius * o.radius;
+  require(!o.wallMass || (*o.wallMass > 0 && *o.wallMass <= cellMass),
+          "--wall-mass must be in (0, rho0 4/3 pi R^3] = (0, " + show(cellMass) +
+              "] kg (the water filling a cell of radius R), not " + show(o.wallMass.value_or(0)));
   require(!o.spacing || *o.spacing > 0, "--spacing must be positive");
   require(o.spread >= 0 && o.spread < 1, "--radius-spread must be in [0, 1)");
   require(o.margin > 0 && o.margin <= 1000,
@@ -242,6 +249,31 @@ void resolveShape(Options &o)
       "--map conformal needs a spheroid: --elongation, or --ellipsoid with two equal semi-axes");
 }
 
+FluidSpacing fluidSpacing(const Options &o);
+
+// --gap G: the fluid lattice's outermost points at least G inside the wall, G < the smallest
+// cell's smallest semi-axis. With fluid, G >= DX/4: the fluid a point stands for reaches DX/2 from
+// it, so that below DX/4 it would reach past the wall by more than DX/4 and the outermost points
+// would sit next to the wall particles (at G = 0, on the wall's own surface). README.md, Usage.
+void validateGap(const Options &o)
+{
+  if (!o.gap) return;
+  const double rmin = o.radius * o.shape.minCoeff() * (1 - o.spread);
+  if (o.nfluid == 0) {
+    require(*o.gap >= 0 && *o.gap < rmin,
+            "--gap must be in [0, smallest radius) = [0, " + show(rmin) + ") m, not " +
+                show(*o.gap));
+    return;
+  }
+  require(*o.gap < rmin,
+          "--gap must be in [DX/4, smallest radius), below " + show(rmin) + " m, not " +
+              show(*o.gap));
+  const double dx = fluidSpacing(o).dx;    // without --dx: DX = (R - G) / rho (chooseSpacing)
+  require(*o.gap >= 0.25 * dx,
+          "--gap must be in [DX/4, smallest radius) = [" + show(0.25 * dx) + ", " + show(rmin) +
+              ") m (DX = " + show(dx) + " m, the fluid spacing), not " + show(*o.gap));
+}
+
 Options parseOptions(int argc, char **argv)
 {
   Options o;
@@ -254,6 +286,7 @@ Options parseOptions(int argc, char **argv)
   }
   resolveShape(o);
   validate(o);
+  validateGap(o);
   return o;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <exception>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +20,18 @@ inline void require(bool ok, const std::string &message)
 {
   if (!ok) throw UsageError(message);
 }
+
+// a number as in a message: 6 significant digits
+inline std::string show(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// The largest reference density (kg/m^3; water: 1000): far above any material's, it keeps the
+// masses rho0 V finite.
+constexpr double kRho0Max = 1e5;
 
 // --help or -h anywhere prints the usage (status 0); else run(), whose errors are printed as
 // "<name>: <message>", with the usage after a UsageError (status 2), alone otherwise (status 1).

@@ -39,6 +39,9 @@ namespace {
       "               [--porosity 0.2] [--periodic xyz | --slab x|y|z] [--junction-gap G]\n"
       "               [--dx DX=D/16] [--gap G=DX/2] [--wall-dx L=DX] [--rho0 1000]\n"
       "               [--wall-mass MW] [--seed 1] [--margin F=0.5] [--dihedrals] --out FILE.data\n"
+      "--gap G: the fluid at least G inside the wall, G >= DX/4 (and the cells deep enough).\n"
+      "--wall-dx L: D/1000 <= L <= D/2. --wall-mass MW: 0 < MW <= rho0 pi D^3/6 (the water\n"
+      "            filling a cell of diameter D); --rho0: at most 1e5.\n"
       "--dihedrals: also write one dihedral per wall edge (atom_style molecular), for\n"
       "            dihedral_style cell/bending.\n"
       "Writes FILE.data, FILE.junctions and FILE.stats. SI units. See tools/cellgen/README.md.\n";
@@ -57,13 +60,6 @@ namespace {
     bool dihedrals = false;
     std::string out;
   };
-
-  std::string show(double v)
-  {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
 
   // Reads option values, naming the option and the word in every error.
   class Args {
@@ -176,12 +172,28 @@ namespace {
     require(o.porosity >= 0 && o.porosity < 0.5,
             "--porosity must be in [0, 0.5), not " + show(o.porosity));
     require(!o.dx || *o.dx > 0, "--dx must be positive, not " + show(o.dx.value_or(0)));
-    require(!o.gap || *o.gap >= 0, "--gap must be >= 0, not " + show(o.gap.value_or(0)));
-    require(!o.wallDx || *o.wallDx > 0, "--wall-dx must be positive");
+    // the fluid at least a quarter of its spacing inside the wall (README.md, Tissue mode); at
+    // most the cells' depth less one DX, checked with the cells (checkResolution)
+    const double dx = o.dx.value_or(o.size / 16.0);
+    require(!o.gap || *o.gap >= 0.25 * dx,
+            "--gap must be >= DX/4 = " + show(0.25 * dx) + " m (DX = " + show(dx) +
+                " m, the fluid spacing), not " + show(o.gap.value_or(0)));
+    // a wall mesh of about 3.6e6 particles per cell (L = D/1000) to the 12 of the coarsest
+    // (L = D/2, beyond which the mesh no longer follows --wall-dx)
+    require(!o.wallDx || (*o.wallDx >= o.size / 1000 && *o.wallDx <= o.size / 2),
+            "--wall-dx must be in [D/1000, D/2] = [" + show(o.size / 1000) + ", " +
+                show(o.size / 2) + "] m (D = --size " + show(o.size) + " m), not " +
+                show(o.wallDx.value_or(0)));
     require(!o.junctionGap || *o.junctionGap >= 0,
             "--junction-gap must be >= 0, not " + show(o.junctionGap.value_or(0)));
-    require(o.rho0 > 0, "--rho0 must be positive");
-    require(!o.wallMass || *o.wallMass > 0, "--wall-mass must be positive");
+    require(o.rho0 > 0 && o.rho0 <= kRho0Max,
+            "--rho0 must be in (0, " + show(kRho0Max) + "] kg/m^3, not " + show(o.rho0));
+    // a wall particle at most as heavy as the water filling a cell of diameter D
+    const double cellMass = o.rho0 * kPi / 6.0 * o.size * o.size * o.size;
+    require(!o.wallMass || (*o.wallMass > 0 && *o.wallMass <= cellMass),
+            "--wall-mass must be in (0, rho0 pi D^3/6] = (0, " + show(cellMass) +
+                "] kg (the water filling a cell of diameter --size), not " +
+                show(o.wallMass.value_or(0)));
     require(o.margin > 0 && o.margin <= 1000, "--margin must be in (0, 1000]");
     require(!o.out.empty(), "--out FILE is required");
   }
