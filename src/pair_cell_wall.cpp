@@ -51,6 +51,10 @@ static constexpr double DEFAULT_P2 = 4.0;
 // displacement; a face that comes within reach with the atom already behind it is a fold of that
 // wall turning its back to the atom (doc/pair_cell_wall.md, Crossing stop)
 static constexpr double CROSS_DEPTH = 0.5;
+// a fluid atom that starts a run nearer than START_GAP x the repulsion's range r0 to a wall atom
+// of its own cell stops the run: in the seed inflation at 642-3000 wall particles starts up to
+// 0.60 r0 blew the cell up, from 0.62 r0 on all ran (doc/pair_cell_wall.md, Restrictions)
+static constexpr double START_GAP = 0.62;
 // columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c; the
 // nearest of another cell's, then (from column NEAR) of the own wall's
 static constexpr int NEAR = 6;
@@ -83,7 +87,7 @@ static inline double ratio_power(double s, double p, int half)
 
 PairCellWall::PairCellWall(LAMMPS *lmp) :
     Pair(lmp), cut_global(0.0), coeffs(nullptr), restart_version(RESTART_VERSION), load_fluid(0),
-    load_wall(0), nmax_load(0), load(nullptr), triangles(0), trireach(0.0),
+    load_wall(0), nmax_load(0), load(nullptr), repulsion(0), triangles(0), trireach(0.0),
     tris(new CellWallTriangles(lmp, "Pair cell/wall", "the triangle contact's neighbour range")),
     nmax_near(0), nearest(nullptr), comm_nearest(0)
 {
@@ -125,6 +129,7 @@ void PairCellWall::compute(int eflag, int vflag)
     const double margin = neighbor->ago == 0 ? neighbor->skin : 2.0 * neighbor->skin;
     near_pairs(margin);
     if (triangles) find_touching(margin);
+    if (update->setupflag && repulsion) check_start_gap();
   }
 
   if (load_wall) {
@@ -181,6 +186,72 @@ void PairCellWall::near_pairs(double margin)
     }
   }
   nearfirst[inum] = static_cast<int>(nearj.size());
+}
+
+/* ----------------------------------------------------------------------
+   at a run's setup: the fluid atom nearest to a wall atom of its own cell (molecule), relative
+   to the repulsion's range r0 of their type pair, over all ranks; nearer than START_GAP x r0 is
+   an error on every rank. Wall atoms are those of the types whose atoms have bonds, fluid atoms
+   those of the other types: a pair of unbonded atoms (the force tests) is never checked.
+------------------------------------------------------------------------- */
+
+void PairCellWall::check_start_gap()
+{
+  if (!atom->molecule_flag || atom->molecular != Atom::MOLECULAR) return;
+  double **x = atom->x;
+  const int *type = atom->type;
+  const tagint *molecule = atom->molecule;
+  const tagint *tag = atom->tag;
+  const int ntypes = atom->ntypes;
+  std::vector<int> bonded(ntypes + 1, 0), wall(ntypes + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->nspecial[i][0] > 0) bonded[type[i]] = 1;
+  MPI_Allreduce(bonded.data(), wall.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+
+  struct {
+    double ratio;
+    int rank;
+  } mine = {START_GAP, comm->me}, least;
+  // distance, r0, fluid atom, wall atom, their types, the cell
+  double found[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = nearfirst[ii]; jj < nearfirst[ii + 1]; jj++) {
+      const int j = nearj[jj] & NEIGHMASK;
+      const Coeff &c = coeffs[type[i]][type[j]];
+      if (!(c.terms & REPULSION) || molecule[i] != molecule[j] || wall[type[i]] == wall[type[j]])
+        continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double r = sqrt(delx * delx + dely * dely + delz * delz);
+      if (r >= mine.ratio * c.r0) continue;
+      const int f = wall[type[i]] ? j : i, w = wall[type[i]] ? i : j;
+      mine.ratio = r / c.r0;
+      found[0] = r;
+      found[1] = c.r0;
+      found[2] = static_cast<double>(tag[f]);
+      found[3] = static_cast<double>(tag[w]);
+      found[4] = type[f];
+      found[5] = type[w];
+      found[6] = static_cast<double>(molecule[f]);
+    }
+  }
+  MPI_Allreduce(&mine, &least, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
+  if (least.ratio >= START_GAP) return;
+  MPI_Bcast(found, 7, MPI_DOUBLE, least.rank, world);
+  const int ftype = static_cast<int>(found[4]), wtype = static_cast<int>(found[5]);
+  error->all(FLERR,
+             "Pair cell/wall: fluid atom {} of cell {} starts {:.4g} m from wall atom {} of its "
+             "cell, {:.3f} x the range r0 = {:.4g} m of the wall-fluid repulsion (types {} {}); "
+             "starts nearer than {} r0 blow the cell up (lost atoms, bond atoms missing): give the "
+             "fluid a gap of at least {} r0 = {:.4g} m from the wall (cellgen --gap {:.4g}; r0 "
+             "itself is recommended) or hold it with the SPH wall boundary instead ('pair_coeff {} "
+             "{} cell/sph wall')",
+             static_cast<tagint>(found[2]), static_cast<tagint>(found[6]), found[0],
+             static_cast<tagint>(found[3]), least.ratio, found[1], ftype, wtype, START_GAP,
+             START_GAP, START_GAP * found[1], START_GAP * found[1], std::min(ftype, wtype),
+             std::max(ftype, wtype));
 }
 
 /* ----------------------------------------------------------------------
@@ -825,9 +896,11 @@ void PairCellWall::init_style()
 
   int other = 0;
   triangles = 0;
+  repulsion = 0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j]) {
+        if (coeffs[i][j].terms & REPULSION) repulsion = 1;
         if (coeffs[i][j].terms & TRIANGLES) other = 1;
         if (coeffs[i][j].terms & (TRIANGLES | SELFTRIANGLES)) triangles = 1;
       }

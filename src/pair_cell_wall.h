@@ -75,6 +75,9 @@ class PairCellWall : public Pair {
   double **load;
   // the list's pairs within their cutoff + margin, from each neighbour build (near_pairs)
   std::vector<int> nearfirst, nearj;
+  int repulsion;    // 1 if any type pair has the wall-fluid repulsion
+  // at a run's setup: no fluid atom deep inside the repulsion of a wall atom of its own cell
+  void check_start_gap();
 
   // triangles: a wall atom against the triangles of other cells' walls, selftriangles: against
   // its own wall's triangles it is not a vertex of (doc/pair_cell_wall.md)
