@@ -242,8 +242,9 @@ void FixCellTurgor::init()
   // rank) to the cell's home rank of this run; cells no longer in the group stay on rank 0
   std::vector<double> list, before;
   state.gather(true, list);
-  // the state before the last transfer's evaluation too, for setup to evaluate it again
-  if (saved >= 0) {
+  // the state before the transfer evaluated at this step too, for setup to evaluate it again
+  const bool again = saved == update->ntimestep;
+  if (again) {
     state.swap_saved();
     state.gather(true, before);
     state.swap_saved();
@@ -251,7 +252,7 @@ void FixCellTurgor::init()
   cells->find_cells();
   cells->init();
   state.keep_home(list, cells->registry(), pi0);
-  if (saved >= 0) {
+  if (again) {
     state.swap_saved();
     state.keep_home(before, cells->registry(), pi0);
     state.swap_saved();
@@ -304,13 +305,12 @@ void FixCellTurgor::setup(int)
   // last run's end evaluated it (the same, unless set or fix_modify changed something between
   // the runs), kept as read from a restart file, else evaluated here
   const bigint step = update->ntimestep;
-  const bool due = (step + 1) % every == 0;
-  if (due && evaluated == step && saved == step) {
+  if (saved == step) {
     state.restore();
     accel.restore(accel_saved);
     water_exchanged = exchanged_saved;
     transfer();
-  } else if (due && evaluated != step) {
+  } else if ((step + 1) % every == 0 && evaluated != step) {
     transfer();
   } else {
     evaluate(false);
@@ -318,15 +318,18 @@ void FixCellTurgor::setup(int)
 }
 
 /* ----------------------------------------------------------------------
-   evaluate the transfer of the next step, keeping the state from before for setup
+   evaluate the transfer of the next step; on a run's last step (the only one whose transfer a
+   setup evaluates again) keep the state from before it
 ------------------------------------------------------------------------- */
 
 void FixCellTurgor::transfer()
 {
-  state.save();
-  accel_saved = accel.save();
-  exchanged_saved = water_exchanged;
-  saved = update->ntimestep;
+  saved = update->ntimestep == update->laststep ? update->ntimestep : -1;
+  if (saved >= 0) {
+    state.save();
+    accel_saved = accel.save();
+    exchanged_saved = water_exchanged;
+  }
   evaluate(true);
 }
 

@@ -91,7 +91,8 @@ class FixCellTurgor : public Fix {
   double moved_pending = 0.0, time_pending = 0.0;
   bool any_pending = false;
   bigint evaluated = -1;    // the step whose end evaluated the last transfer
-  // the state before that evaluation, to evaluate it again at a run's setup (not in restart files)
+  // the state before that evaluation when it fell on a run's last step, to evaluate it again at
+  // the next run's setup: the step (-1: none kept; not in restart files)
   bigint saved = -1;
   CellAccel::Saved accel_saved{};
   double exchanged_saved = 0.0;
