@@ -76,7 +76,7 @@ plot 'mass_LP2.5e-4.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-4', 
      'mass_LP2.5e-5.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-5', \
      'mass_LP2.5e-6.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-6', \
      'mass_LP2.5e-7.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-7', \
-     'mass_seedwarn.dat' using ($1*1e6):2 with lines lw 2 dt 2 lc rgb 'black' title 'the seed model (Table-1 wall t0 = 126 nm, particle wall-fluid), L_P = 2.5e-6: no steady state'
+     'mass_seedwarn.dat' using ($1*1e6):2 with lines lw 2 dt 2 lc rgb 'black' title 'seed model (Table-1 wall, particle wall-fluid)'
 set logscale x
 set xrange [1:2500]
 set xlabel 'time (us), logarithmic'
