@@ -21,6 +21,11 @@ cd "$out"
 rm -f final_*.txt mass_*.dat runs.txt
 echo "# inflation_background: $(date -u), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg)"
 "$build/tools/cellgen/cellgen" --wall-mass 1e-12 --out cell.data >cellgen.log
+# examples/inflation's input (the wall boundary with background auto 5e3, the fix's default turgor)
+# with P_MIN and the turgor measure of each run
+sed -e "s/background auto 5e3/background auto $pmin/" \
+  -e 's/^\(fix  *turgor all cell\/turgor .*\)$/\1 turgor ${turgor}/' \
+  "$here/../examples/inflation/in.inflation" >in.inflation
 
 # LP accel dt steps: 0.4 ms of MD time (40 ms of transfer time at accel 100); 0.8 ms at 2.5e-6,
 # which is not steady at 0.4 ms (P_T 199.7 kPa)
@@ -34,7 +39,7 @@ one() {
   set -- $1
   local tag="LP$1-a$2-dt$3-$5" t0 t1
   t0=$(date +%s.%N)
-  "$build/bin/lmp" -in "$here/../examples/inflation/in.inflation" -log none -var bnd 1 -var bg "$pmin" \
+  "$build/bin/lmp" -in in.inflation -log none \
     -var LP "$1" -var accel "$2" -var dt "$3" -var steps "$4" -var turgor "$5" -var every 100 \
     -var tag "$tag" >"$tag.log" 2>&1 || echo "run $tag failed: $(grep -m 1 ERROR "$tag.log")" >&2
   t1=$(date +%s.%N)

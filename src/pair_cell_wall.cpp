@@ -795,6 +795,12 @@ void PairCellWall::read_file(Coeff &c, const char *file, const char *which)
                which, file);
 
   CellParams params(lmp, file, "pair_coeff cell/wall");
+  if (wallfluid && !params.has("wallfluid_f0") && !params.has("wallfluid_r0"))
+    error->all(FLERR,
+               "Pair_coeff cell/wall: parameter file {} has no wallfluid_* keys: it holds the "
+               "fluid with the SPH wall boundary (pair_coeff I J cell/sph wall); the wall-fluid "
+               "particle model (the seed's) has its keys in apple-seed.cellsph",
+               file);
   if (wallfluid) {
     c.terms = REPULSION;
     c.f0 = params.positive("wallfluid_f0");

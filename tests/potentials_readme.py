@@ -5,7 +5,8 @@
   potentials_readme.py POTENTIALS_DIR --selftest check that each check fails when its quote is off
 
 1. The Keys table: every row's apple-seed and apple columns equal the files' values (numbers as
-   numbers, words as words), and the table has a row for every key of both files.
+   numbers, words as words; — for a key the file does not have), and the table has a row for
+   every key of both files.
 2. Numbers in the prose (QUOTES below): each pattern must occur exactly once in the README; a
    number copied from a file must equal it, a number derived from the files (a limit-point
    pressure, a pull, a cutoff) must equal the formula rounded to the digits quoted.
@@ -34,19 +35,18 @@ def rounded(f):
 # (pattern with one group per number, file, [(value from the file's keys p, how compared)])
 QUOTES = [
     (r"Table 1 with an effective wall thickness t0 = " + NUM + r" µm, so that the wall holds "
-     + NUM + r" kPa, and a wall–fluid range r0 = " + NUM + r" µm", "apple",
-     [exact(lambda p: p["wall_t0"] * 1e6), exact(lambda p: p["turgor_P"] / 1e3),
-      exact(lambda p: p["wallfluid_r0"] * 1e6)]),
-    (r"generate cells with `cellgen --gap " + NUM + r"`", "apple",
+     + NUM + r" kPa", "apple",
+     [exact(lambda p: p["wall_t0"] * 1e6), exact(lambda p: p["turgor_P"] / 1e3)]),
+    (r"a wall–fluid range r0 = " + NUM + r" µm that keeps", "apple-seed",
+     [exact(lambda p: p["wallfluid_r0"] * 1e6)]),
+    (r"generate cells with `cellgen --gap " + NUM + r"`", "apple-seed",
      [exact(lambda p: p["wallfluid_r0"])]),
     (r"2\.5e-6 \(good\) and 2\.5e-7 \(too slow\); the values vary per run, " + NUM
      + r" is the\s+default here", "apple", [exact(lambda p: p["turgor_LP"])]),
     (r"2\.5e-6 \(good\) and 2\.5e-7 \(too slow\); the values vary per run, " + NUM
      + r" is the\s+default here", "apple-seed", [exact(lambda p: p["turgor_LP"])]),
-    (r"fluid spacing 8\.75 µm with the gap r0 = " + NUM + r" µm of both files", "apple",
-     [exact(lambda p: p["wallfluid_r0"] * 1e6)]),
-    (r"fluid spacing 8\.75 µm with the gap r0 = " + NUM + r" µm of both files", "apple-seed",
-     [exact(lambda p: p["wallfluid_r0"] * 1e6)]),
+    (r"fluid spacing 8\.75 µm with the gap r0 = " + NUM + r" µm of apple-seed\.cellsph",
+     "apple-seed", [exact(lambda p: p["wallfluid_r0"] * 1e6)]),
     (r"With Table 1 \(G t0 = " + NUM + r" N/m,\s+R0 = " + NUM + r" µm\) that maximum is " + NUM
      + r" kPa: the seed's wall has no turgid equilibrium at its own\s+P_T = " + NUM + " kPa",
      "apple-seed",
@@ -68,16 +68,16 @@ QUOTES = [
      [exact(lambda p: p["turgor_P"] / 1e3), exact(lambda p: p["cell_R0"] * 1e6),
       exact(lambda p: 1092),
       rounded(lambda p: p["turgor_P"] * 4 * math.pi * p["cell_R0"] ** 2 / 1092)]),
-    (r"r0 = " + NUM + r" µm, f0 = " + NUM + r" N m \(f0 ∝ r0", "apple",
+    (r"r0 = " + NUM + r" µm, f0 = " + NUM + r" N m \(f0 ∝ r0", "apple-seed",
      [exact(lambda p: p["wallfluid_r0"] * 1e6), exact(lambda p: p["wallfluid_f0"])]),
-    (r"rc = ra \+ " + NUM + r" µm = " + NUM + r" µm\s+reaches the first fluid layer", "apple",
+    (r"rc = ra \+ " + NUM + r" µm = " + NUM + r" µm\s+reaches the first fluid layer", "apple-seed",
      [rounded(lambda p: (p["adhesion_rc"] - p["adhesion_ra"]) * 1e6),
       exact(lambda p: p["adhesion_rc"] * 1e6)]),
     (r"alpha = " + NUM + r" /m puts\s+the strongest pull at ra \+ ln2/alpha = " + NUM + " µm",
-     "apple",
+     "apple-seed",
      [exact(lambda p: p["adhesion_alpha"]),
       rounded(lambda p: (p["adhesion_ra"] + math.log(2) / p["adhesion_alpha"]) * 1e6)]),
-    (r"D = " + NUM + r" J makes the peak pull alpha D / 2 = " + NUM + " N", "apple",
+    (r"D = " + NUM + r" J makes the peak pull alpha D / 2 = " + NUM + " N", "apple-seed",
      [exact(lambda p: p["adhesion_D"]),
       rounded(lambda p: p["adhesion_alpha"] * p["adhesion_D"] / 2)]),
     (r"sigma = " + NUM + r" µm puts the WCA cutoff 2\^\(1/6\) sigma = " + NUM + " µm", "apple",
@@ -206,7 +206,11 @@ def check_table(readme, params):
                 continue
             for key, value in zip(keys, quoted):
                 seen.add(key)
-                if key not in params[name]:
+                if value == "—":    # the file has no such key
+                    if key in params[name]:
+                        failures.append(f"table row '{key}', column {name}: README —, "
+                                        f"{FILES[name]} {params[name][key]}")
+                elif key not in params[name]:
                     failures.append(f"table row '{key}': not a key of {FILES[name]}")
                 elif not same_value(value, params[name][key]):
                     failures.append(f"table row '{key}', column {name}: README {value}, "

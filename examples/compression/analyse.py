@@ -3,13 +3,12 @@
 reference for rate independence, the one with hold_*.dat is the hold).
 
 Writes fd_v<SPEED>.dat (one line per output step of compression and pause):
-  delta[m] strain F[N] P_W[Pa] P_T[Pa] A_in A_trib A_out A_hull[m^2] F_fluid[N] V/V0 KE[J] time[s] n_contact
+  delta[m] strain F[N] P_W[Pa] P_T[Pa] A_in A_trib A_out A_hull[m^2] V/V0 KE[J] time[s] n_contact
 and holdfd_v<SPEED>.dat (the hold):
   t_phys[s] F[N] P_W[Pa] P_T[Pa] A_in A_trib[m^2] V/V0 M/M0 pi[Pa] A_out[m^2] n_contact fluid_outside
     fluid_free_volume[m^3]
 F = the plate force (mean of the two plates), areas the mean of the two plates (contact_area.py),
-F_fluid the force of the fluid on the wall atoms in contact (compute group/group), V0 the turgid
-cell's volume. Prints the summary tables (README.md).
+V0 the turgid cell's volume. Prints the summary tables (README.md).
 """
 import math
 import os
@@ -41,14 +40,14 @@ def compression(tag):
         F = (r[5] - r[4]) / 2
         mean = lambda i: (a[i] + a[i + 5]) / 2
         out.append(dict(delta=r[2], strain=r[3], F=F, PW=r[7], PT=r[6], Ain=mean(2), Atrib=mean(3),
-                        Aout=mean(4), Ahull=mean(5), Ffl=(r[17] - r[16]) / 2, VV0=r[9] / V0, KE=r[18],
+                        Aout=mean(4), Ahull=mean(5), VV0=r[9] / V0, KE=r[16],
                         t=r[1], n=(a[1] + a[6]) / 2, outside=r[12], free=r[13], A=r[10]))
     with open(f"fd_{tag}.dat", "w") as f:
         f.write("# delta[m] strain F[N] P_W[Pa] P_T[Pa] A_in[m2] A_trib[m2] A_out[m2] A_hull[m2] "
-                "F_fluid[N] V/V0 KE[J] time[s] n_contact\n")
+                "V/V0 KE[J] time[s] n_contact\n")
         for d in out:
             f.write(" ".join(f"{d[k]:.8e}" for k in ("delta", "strain", "F", "PW", "PT", "Ain", "Atrib",
-                                                     "Aout", "Ahull", "Ffl", "VV0", "KE", "t", "n")) + "\n")
+                                                     "Aout", "Ahull", "VV0", "KE", "t", "n")) + "\n")
     return out, V0
 
 
@@ -64,7 +63,7 @@ def main():
     print(f"## Plate force against turgor x contact area ({ref}, sealed; areas: mean of the two plates)")
     print()
     print("| strain | delta (um) | F (mN) | P_W (kPa) | n contact | A_in | A_trib | A_out | A_hull (1e-9 m^2) "
-          "| F/(P_W A_trib) - 1 | half band (A_out-A_in)/2A_trib | F/(P_W A_in) - 1 | F_fluid/F - 1 | V/V0 |")
+          "| F/(P_W A_trib) - 1 | half band (A_out-A_in)/2A_trib | F/(P_W A_in) - 1 | V/V0 |")
     print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     marks = [0.1, 0.2, 0.3, 0.4, 0.5]
     picked = [min(d[:imax + 1], key=lambda x: abs(x["strain"] - m)) for m in marks] + [d[-1]]
@@ -73,7 +72,7 @@ def main():
         print(f"| {label} | {x['delta']*1e6:.1f} | {x['F']*1e3:.4f} | {x['PW']/1e3:.1f} | {x['n']:.0f} "
               f"| {x['Ain']*1e9:.3f} | {x['Atrib']*1e9:.3f} | {x['Aout']*1e9:.3f} | {x['Ahull']*1e9:.3f} "
               f"| {x['F']/(x['PW']*x['Atrib'])-1:+.4f} | {(x['Aout']-x['Ain'])/(2*x['Atrib']):.4f} "
-              f"| {x['F']/(x['PW']*x['Ain'])-1:+.4f} | {x['Ffl']/x['F']-1:+.4f} | {x['VV0']:.5f} |")
+              f"| {x['F']/(x['PW']*x['Ain'])-1:+.4f} | {x['VV0']:.5f} |")
     band = [x for x in d[:imax + 1] if x["strain"] >= 0.1]
     dev = [x["F"] / (x["PW"] * x["Atrib"]) - 1 for x in band]
     inside = sum(1 for x in band if x["Ain"] <= x["F"] / x["PW"] <= x["Aout"])

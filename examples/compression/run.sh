@@ -4,7 +4,7 @@
 # while water leaves through the wall (physiological L_P, physical time), contact patch measured
 # (contact_area.py), tables (analyse.py), plots (gnuplot) and pictures (dump image). Outputs in out/.
 # Needs the set-up of tools/setup.sh (build/bin/lmp, build/tools/cellgen/cellgen). NP=1 runs on one
-# rank. About 2 minutes on an idle 2-core machine (README.md).
+# rank. README.md gives the time.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
@@ -22,10 +22,10 @@ if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$buil
 start=$(date +%s)
 stamp() { echo "[compression] $1 ($(($(date +%s) - start)) s)"; }
 
-# 1. the turgid cell: seed resolution (R0 = 75 um, 1092 wall and 1647 fluid particles), wall-fluid
-# gap = r0 = 11 um, wall particles as heavy as fluid particles (dt = 2e-8 s), box 1.2 R0 beyond the
-# cell (room for the flattened cell); uptake to P_T = pi = 200 kPa, then written to turgid.data
-"$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --margin 1.2 --out cell.data >cellgen.log
+# 1. the turgid cell: seed resolution (R0 = 75 um, 1092 wall and 1647 fluid particles), cellgen's
+# default gap (the SPH wall boundary), wall particles as heavy as fluid particles (dt = 2e-8 s), box
+# 1.2 R0 beyond the cell (room for the flattened cell); uptake to P_T = pi = 200 kPa -> turgid.data
+"$build/tools/cellgen/cellgen" --wall-mass 1e-12 --margin 1.2 --out cell.data >cellgen.log
 "${lmp[@]}" -in "$here/in.turgid" -log log.turgid >turgid.screen
 stamp "turgid cell: $(cat turgid.txt)"
 
@@ -33,7 +33,7 @@ stamp "turgid cell: $(cat turgid.txt)"
 # leaving (L_P = 1e-13 m/(s Pa), accel 2.5e6: 0.05 s of physical time per step) and pictured
 for v in 0.1 0.05 0.025; do
   extra=()
-  if [ "$v" = 0.05 ]; then extra=(-var hold 1 -var images 1); fi
+  if [ "$v" = 0.05 ]; then extra=(-var holdsteps 40000 -var images 1); fi
   "${lmp[@]}" -in "$here/in.compression" -var v "$v" -var tag "v$v" "${extra[@]}" -log "log.v$v" >"v$v.screen"
   python3 "$here/contact_area.py" turgid.data "walls_v$v.txt" "area_v$v.txt"
   stamp "v = $v m/s: $(head -n 1 "final_v$v.txt")"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The seed's inflation experiment (Figs. 4 and 5) with the calibrated apple set, the seed's own
-# Table-1 wall (limit-point stop), and a physiological L_P in physical time. Outputs in out/.
-# Needs the set-up of tools/setup.sh (build/bin/lmp, build/tools/cellgen/cellgen). About 5 min on
-# 2 cores: independent runs go two at a time, one core each.
+# The seed's inflation experiment (Figs. 4 and 5) with the calibrated apple set and the SPH wall
+# boundary (in.inflation), the seed's own Table-1 wall with its particle wall-fluid model
+# (in.inflation_seed: limit-point stop), and a physiological L_P in physical time. Outputs in out/.
+# Needs the set-up of tools/setup.sh (build/bin/lmp, build/tools/cellgen/cellgen). Independent runs
+# go two at a time, one core each (README.md gives the time).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
@@ -14,41 +15,43 @@ rm -f mass_*.dat final_*.txt fig4_*.png fig5.png seed_wall.txt summary.txt physi
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
 start=$(date +%s)
 
-# the seed's resolution (R0 = 75 um, 1092 wall and 1647 fluid particles), the wall-fluid gap at the
-# repulsion range r0 (doc/pair_cell_wall.md), wall particles as heavy as fluid particles
-"$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell.data >cellgen.log
+# the seed's resolution (R0 = 75 um, 1092 wall and 1647 fluid particles), wall particles as heavy as
+# fluid particles; cellgen's default gap DX/2 for the wall boundary, and for the seed's particle
+# model the gap at its repulsion range r0 = 11 um (potentials/apple-seed.cellsph)
+"$build/tools/cellgen/cellgen" --wall-mass 1e-12 --out cell.data >cellgen.log
+"$build/tools/cellgen/cellgen" --gap 11e-6 --wall-mass 1e-12 --out cell_seed.data >cellgen_seed.log
 
-run() {    # run TAG [-var NAME VALUE ...]: one LAMMPS run on one core, screen output in TAG.log
-  local tag=$1
-  shift
-  "$lmp" -in "$here/in.inflation" -log "log.$tag" -var tag "$tag" "$@" >"$tag.log" 2>&1
+run() {    # run INPUT TAG [-var NAME VALUE ...]: one LAMMPS run on one core, screen output in TAG.log
+  local input=$1 tag=$2
+  shift 2
+  "$lmp" -in "$here/$input" -log "log.$tag" -var tag "$tag" "$@" >"$tag.log" 2>&1
 }
 
 # lane 1: L_P = 2.5e-7 (the seed's "too slow"), unaccelerated, 2.5 ms; then the physiological
 # L_P = 1e-13 m/(s Pa) with van 't Hoff pi in physical time (67 min) with time-scale bridging: each
 # step advances mass transfer by accel dt, accel = 4e7 and 1e7 (and 2.5e6 in lane 2)
 {
-  run LP2.5e-7 -var LP 2.5e-7 -var steps 125000 -var every 500
-  run phys4e7 -var LP 1e-13 -var osmotic vanthoff -var accel 4e7 -var steps 5000 -var every 25
-  run phys1e7 -var LP 1e-13 -var osmotic vanthoff -var accel 1e7 -var steps 20000 -var every 100
+  run in.inflation LP2.5e-7 -var LP 2.5e-7 -var steps 125000 -var every 500
+  run in.inflation phys4e7 -var LP 1e-13 -var osmotic vanthoff -var accel 4e7 -var steps 5000 -var every 25
+  run in.inflation phys1e7 -var LP 1e-13 -var osmotic vanthoff -var accel 1e7 -var steps 20000 -var every 100
 } &
 lane1=$!
 
 # lane 2: L_P = 2.5e-6 (with the Fig. 4 pictures), 2.5e-5, 2.5e-4, 400 us each; the seed's wall;
 # the physiological run with accel = 2.5e6
 {
-  run LP2.5e-6 -var LP 2.5e-6 -var images 1
-  run LP2.5e-5 -var LP 2.5e-5
-  run LP2.5e-4 -var LP 2.5e-4
-  # the seed's Table 1 wall (t0 = 126 nm) cannot hold pi = 200 kPa: the fix stops at once ...
-  if run seed -var set apple-seed; then echo "expected a limit-point stop" >&2; exit 1; fi
+  run in.inflation LP2.5e-6 -var LP 2.5e-6 -var images 1
+  run in.inflation LP2.5e-5 -var LP 2.5e-5
+  run in.inflation LP2.5e-4 -var LP 2.5e-4
+  # the seed's model (Table-1 wall, t0 = 126 nm; particle wall-fluid model) cannot hold
+  # pi = 200 kPa: the fix stops at once ...
+  if run in.inflation_seed seed; then echo "expected a limit-point stop" >&2; exit 1; fi
   grep -m 1 '^ERROR' seed.log >seed_wall.txt
-  # ... and, told to go on (limit warn), the cell balloons (stopped at an area stretch of 1.15; the
-  # fluid breaks through the overstretched wall at about 1.2, before its limit stretch 1.383)
-  run seedwarn -var set apple-seed -var limit warn -var lammax 1.15 -var steps 20000
+  # ... and, told to go on (limit warn), the cell balloons (stopped at an area stretch of 1.15)
+  run in.inflation_seed seedwarn -var limit warn
   grep -m 1 '^WARNING: Fix cell/turgor' seedwarn.log >>seed_wall.txt
   grep -m 1 'Fix halt condition' seedwarn.log >>seed_wall.txt
-  run phys2.5e6 -var LP 1e-13 -var osmotic vanthoff -var accel 2.5e6 -var steps 80000 -var every 400
+  run in.inflation phys2.5e6 -var LP 1e-13 -var osmotic vanthoff -var accel 2.5e6 -var steps 80000 -var every 400
 } &
 lane2=$!
 wait $lane1
@@ -61,7 +64,7 @@ python3 "$here/analyse.py" summary physiological
 gnuplot <<'GP'
 set terminal pngcairo size 1400,600 noenhanced font ",11"
 set output 'fig5.png'
-set multiplot layout 1,2 title "Fig. 5: cell fluid mass against time, one apple cell in pure water, pi0 = 200 kPa (cellsph, calibrated apple set)"
+set multiplot layout 1,2 title "Fig. 5: cell fluid mass against time, one apple cell in pure water, pi0 = 200 kPa (cellsph, calibrated apple set, SPH wall boundary)"
 set ylabel 'fluid mass M / M0'
 set yrange [0.95:1.9]
 set key bottom right
@@ -73,7 +76,7 @@ plot 'mass_LP2.5e-4.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-4', 
      'mass_LP2.5e-5.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-5', \
      'mass_LP2.5e-6.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-6', \
      'mass_LP2.5e-7.dat' using ($1*1e6):2 with lines lw 2 title 'L_P = 2.5e-7', \
-     'mass_seedwarn.dat' using ($1*1e6):2 with lines lw 2 dt 2 lc rgb 'black' title 'Table-1 wall (t0 = 126 nm), L_P = 2.5e-6: no steady state'
+     'mass_seedwarn.dat' using ($1*1e6):2 with lines lw 2 dt 2 lc rgb 'black' title 'seed model (Table-1 wall, particle wall-fluid)'
 set logscale x
 set xrange [1:2500]
 set xlabel 'time (us), logarithmic'

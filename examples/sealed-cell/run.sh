@@ -1,31 +1,22 @@
 #!/usr/bin/env bash
 # Sealed cell: geometry, LAMMPS run on 2 MPI ranks, plot and pictures; outputs in
 # examples/sealed-cell/out/. Needs the set-up of tools/setup.sh (build/bin/lmp, cellgen).
-# NP=1 bash run.sh runs on one rank; BOUNDARY=1 bash run.sh holds the fluid with the SPH wall
-# boundary (pair_coeff 1 2 cell/sph wall, cellgen's default gap) instead of the wall-fluid
-# particles, outputs in examples/sealed-cell/out-boundary/; BOUNDARY=auto the same with pair
-# cell/sph background auto 5 kPa after the water ramp (a uniform fluid), outputs in out-auto/.
+# NP=1 bash run.sh runs on one rank.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
 np=${NP:-2}
-boundary=${BOUNDARY:-0}
-pmin=-1
 out=$here/out
-if [ "$boundary" = 1 ]; then out=$here/out-boundary; fi
-if [ "$boundary" = auto ]; then out=$here/out-auto boundary=1 pmin=5e3; fi
 mkdir -p "$out"
 cd "$out"
 rm -f cut_*.png sealed_cell.dat profile.txt
 if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fi
-# seed resolution: R0 = 75 um, 1092 wall and 1647 fluid particles, wall-fluid gap = r0 = 11 um
-# with the boundary: cellgen's default gap DX/2
-if [ "$boundary" = 1 ]; then gap=4.79885e-6; else gap=11e-6; fi
-"$build/tools/cellgen/cellgen" --gap "$gap" --wall-mass 1e-12 --out cell.data >cellgen.log
+# seed resolution: R0 = 75 um, 1092 wall and 1647 fluid particles, cellgen's default gap DX/2
+"$build/tools/cellgen/cellgen" --wall-mass 1e-12 --out cell.data >cellgen.log
 if [ "$np" = 1 ]; then run=("$build/bin/lmp"); else run=(mpirun -np "$np" "$build/bin/lmp"); fi
-"${run[@]}" -in "$here/in.sealed_cell" -var boundary "$boundary" -var gap "$gap" -var pmin "$pmin" -log log.lammps \
+"${run[@]}" -in "$here/in.sealed_cell" -log log.lammps \
   >screen.log
 last=$(ls cut_*.png | sort -t_ -k2 -n | tail -n 1)
 cp "$last" cut_final.png

@@ -34,6 +34,8 @@ constexpr const char *kUsage =
     "--gap G: the fluid lattice at least G inside the wall (default DX/2), DX/4 <= G < the "
     "smallest\n"
     "            radius (semi-axis), DX the fluid spacing; without fluid (--nfluid 0) 0 <= G.\n"
+    "            DX/2 suits the SPH wall boundary (apple.cellsph); the seed's particle model\n"
+    "            (apple-seed.cellsph wallfluid) needs its range r0: --gap 11e-6.\n"
     "--wall-mass MW: 0 < MW <= rho0 4/3 pi R^3 (the water filling a cell); --rho0: at most 1e5.\n"
     "--margin F: the box reaches F x R beyond the cells on each side (F > 0, default 0.5);\n"
     "            room to deform: compressing a cell to half its height needs F >= 1.\n"
