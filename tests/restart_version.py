@@ -12,6 +12,10 @@
                                                settings of the keywords removed in version 12
                                                (NAME: eos, hmode, tref, shift, tensile, grow, lag,
                                                adhesion; default: off)
+  restart_version.py IN OUT older cell/wall [smooth=0|1]
+                                               the pair cell/wall payload of version 6 in the
+                                               layout of version 5, every pair with an
+                                               adhesion with the removed smooth flag (default 0)
   restart_version.py IN OUT older cell/bending the dihedral cell/bending payload of version 2 in
                                                the layout of version 1 (no form per type)
 
@@ -144,6 +148,27 @@ def sph_to_older(data, at, version, target, removed):
     data[at:pos] = out + pairs
 
 
+def wall_to_version5(data, at, version, smooth):
+    """Write the version-6 pair cell/wall payload whose marker is at offset at in the layout of
+    version 5, with the removed adhesion smooth flag (0 or 1) of every set type pair: after the
+    marker the cutoff (double), then per type pair I <= J setflag (int) and if set the terms
+    (int) and 14 doubles (f0 r0 p1 p2 D alpha ra rc eps sigma teps tsigma seps ssigma); version 5
+    has the flag (double) after sigma."""
+    if version != 6:
+        sys.exit(f"restart_version.py: cell/wall payload version {version}, expected 6")
+    n = header_count(data, 16, 17, "NTYPES")
+    pos = at + 16
+    for _ in range(n * (n + 1) // 2):
+        (setflag,) = struct.unpack_from("=i", data, pos)
+        pos += 4
+        if setflag:
+            (terms,) = struct.unpack_from("=i", data, pos)
+            pos += 4 + 10 * 8
+            data[pos:pos] = struct.pack("=d", smooth if terms & 2 else 0.0)    # 2: adhesion
+            pos += 8 + 4 * 8
+    struct.pack_into("=d", data, at, -5.0)
+
+
 def main():
     if len(sys.argv) < 5 or sys.argv[3] not in ("newer", "unversioned", "older"):
         sys.exit(__doc__)
@@ -151,7 +176,7 @@ def main():
     data = bytearray(open(src, "rb").read())
     for style in styles:
         if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/lamella", "cell/bending")) or (
-                mode == "older" and style not in ("cell/turgor", "cell/sph", "cell/bending")):
+                mode == "older" and style not in ("cell/turgor", "cell/sph", "cell/wall", "cell/bending")):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
@@ -162,6 +187,11 @@ def main():
             target = int(styles[1]) if len(styles) > 1 else 11
             sph_to_older(data, at, version, target, styles[2:])
             print(f"restart_version.py: {style} payload version {version} -> {target}")
+            break
+        elif style == "cell/wall" and mode == "older":
+            smooth = float(styles[1].split("=")[1]) if len(styles) > 1 else 0.0
+            wall_to_version5(data, at, version, smooth)
+            print(f"restart_version.py: {style} payload version {version} -> 5")
             break
         elif style == "cell/bending" and mode == "older":
             if version != 2:
