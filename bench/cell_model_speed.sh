@@ -4,10 +4,10 @@
 # (1092 wall + 1647 fluid particles) on 1 and 2 MPI ranks, for the two wall-fluid models:
 # particles (pair cell/wall wallfluid, cellgen --gap 11e-6) and the SPH wall boundary
 # (pair_coeff 1 2 cell/sph wall, cellgen's default gap); with the boundary, the smoothing length
-# per atom: mass (h = 1.27 (m/rho0)^(1/3)) and adaptive (h = 1.27 (m/rho)^(1/3)), and fixed at
+# per atom, adaptive (h = 1.27 (m/rho)^(1/3)), and fixed at
 # the adaptive run's mean h (boundary-h14: 14.3 um, the cost of h adaptive at equal h).
 #   bash bench/cell_model_speed.sh [nsteps=5000] [repeats=3] [models="particles boundary"]
-#   (models also: mass adaptive boundary-h14 auto; auto: the boundary with pair cell/sph
+#   (models also: adaptive boundary-h14 auto; auto: the boundary with pair cell/sph
 #   background auto 5e4 in the timed run; 5e3 and 2e4 lost wall atoms in these undamped
 #   dynamics while P_b followed its target on every step, and 5e3 runs with the default lag of
 #   200 steps: doc/pair_cell_sph.md, background pressure)
@@ -31,7 +31,7 @@ case $model in
   particles) bnd=0 gap=11e-6 ;;
   boundary) bnd=1 gap=4.79885e-6 ;;
   boundary-h14) bnd=1 gap=4.79885e-6 hfix=14.3e-6 ;;
-  mass | adaptive) bnd=1 gap=4.79885e-6 hmode=$model ;;
+  adaptive) bnd=1 gap=4.79885e-6 hmode=$model ;;
 esac
 "$build/tools/cellgen/cellgen" --gap "$gap" --wall-mass 1e-12 --out cell.data >cellgen.log
 echo

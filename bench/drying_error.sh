@@ -22,7 +22,7 @@
 # the cores (note it with the table); the CPU time (user + system, /usr/bin/time) is the cost. The
 # last column is the drying alone, turgid to the end (LAMMPS's loop times after the turgid stage).
 # WORK=dir keeps (and reuses) the runs there. LMPVARS="-var NAME VALUE ..." is passed to every run
-# (e.g. LMPVARS="-var tensile 0" for the scene without the artificial stress).
+# (e.g. LMPVARS="-var RH 0.3").
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../build}

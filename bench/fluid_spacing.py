@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Clumping of the fluid of a cell, measured against each atom's own spacing (bench/drying_clump.sh,
-examples/drying/analyse.py): for each snapshot of a LAMMPS dump 'id type x y z mass d_rho'
+"""Clumping of the fluid of a cell, measured against each atom's own spacing (as
+examples/drying/analyse.py; bench/drying_clump.sh, which ran it, was removed 2026-12-07): for each
+snapshot of a LAMMPS dump 'id type x y z mass d_rho'
 (type 1 fluid, 2 wall) the nearest fluid neighbour distance r_i of each fluid atom over its own
 spacing s_i = (m_i/rho_i)^(1/3) (the volume the atom stands for), its quantiles and the share of
 atoms with r_i/s_i < 0.5 (clumped), the same share against the one spacing of the fluid's mass at

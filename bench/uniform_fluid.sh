@@ -12,7 +12,7 @@
 #     stated, stretch about 1.11; 1.06 and 2.2 x water: about 1.02 and 1.30)
 #   NP ranks (default 1)
 #   KEEP=folder: keep each run's last profile there
-# e.g. VARIANTS="base:- jig02:jig=0.2 shift02:shiftA=0.02,nshift=15000" CASES="seed" bench/uniform_fluid.sh
+# e.g. VARIANTS="base:- jig02:jig=0.2" CASES="seed" bench/uniform_fluid.sh
 # (seed case, 1 rank: 14-15 min each with the 2 cores loaded about 3 times over)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)

@@ -8,7 +8,7 @@
 #   A. seed resolution (1092 wall, 1647 fluid), 1.35 x water: old model (gap 11 um) and boundary
 #   B. seed resolution, boundary, 1.06 and 2.2 x water (stretch about 1.02 and 1.30)
 #   C. boundary at 1.35 x water, coarse (312 wall, 461 fluid) and fine (2562 wall, 3911 fluid)
-#   H. the smoothing length (boundary): fixed h, h mass and h adaptive (eta = 1.27, h/dx of the
+#   H. the smoothing length (boundary): fixed h and h adaptive (eta = 1.27, h/dx of the
 #      fluid lattice) at three resolutions, 1.35 x water, and at the seed resolution, 1.06 and 2.2 x
 #      (HMODES and HCASES pick a subset: HMODES=adaptive HCASES="coarse seed")
 #   U. uniformity of the fluid against the fluid's parameters: each of UVARIANTS, given as
@@ -70,8 +70,8 @@ run_case() {
   esac
 }
 if [[ $parts == *H* ]]; then
-  echo "== H. boundary: fixed h, h mass, h adaptive"
-  for hmode in ${HMODES:-fixed mass adaptive}; do
+  echo "== H. boundary: fixed h, h adaptive"
+  for hmode in ${HMODES:-fixed adaptive}; do
     for case in ${HCASES:-coarse seed fine seed-1.06 seed-2.2}; do run_case "$hmode" "$case"; done
   done
   hmode=fixed

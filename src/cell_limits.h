@@ -34,8 +34,6 @@ namespace CellLimits {
   constexpr double SPH_H_MAX = 1.0;       // smoothing length h, m (cells: about 1e-5)
   // background pressure |P_b| and background auto P_min, Pa (drying: 3e5)
   constexpr double PRESSURE_MAX = 1e9;
-  // work of adhesion W of the wall boundary, J/m^2 (water on a wall: below 0.15)
-  constexpr double ADHESION_MAX = 1e3;
 
   // the water transfer (fix cell/turgor; keys turgor_LP, turgor_Lcc, turgor_Ea)
   constexpr double CONDUCTANCE_MAX = 1e3;    // L_P and L_cc, m s^-1 Pa^-1 (apple: 1e-13)

@@ -40,14 +40,15 @@ using namespace LAMMPS_NS;
 // 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
 // wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag;
-// 11: background auto's P_b now
-static const int RESTART_VERSION = 11;
-static const double TREF_DEFAULT = 298.15;
+// 11: background auto's P_b now; 12: without the removed eos, Tref, shift, tensile, adhesion W,
+// grow and lag (read_old_settings reads them from older files)
+static const int RESTART_VERSION = 12;
+// the temperature (K) of the pair_coeff viscosity mu: 25 C
+static const double TREF = 298.15;
 
-static const char *const EOS_NAMES[] = {"linear", "tait"};
 static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
-// per-atom h: the neighbour cutoff allows h up to grow x the largest h at the run's start (run_hcap;
-// unless a cutoff is given); pair_style keyword grow, by default GROW
+// per-atom h: the neighbour cutoff allows h up to GROW x the largest h at the run's start
+// (run_hcap; unless a cutoff is given)
 static const double GROW = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-10;
@@ -74,32 +75,20 @@ static const int REFRESH_MAX = 320;
 static const double JUMP_TOL = 1e-6;
 // contacts: the near candidates lie within reach + NEAR x skin of the wall (wall_forces)
 static const double NEAR = 0.25;
-// particle shifting: the largest displacement of one step, in units of the atom's h
-static const double SHIFT_MAX = 0.05;
 // background auto: the default relaxation time of P_b, in steps (doc/pair_cell_sph.md: 20 steps
 // let the seed cell's breathing grow in undamped dynamics, 200 damp it)
 static const int AUTO_LAG = 200;
 
-// f^n of the artificial stress, n >= 1
-static inline double power_n(double f, int n)
-{
-  double p = f;
-  for (int k = 1; k < n; k++) p *= f;
-  return p;
-}
-
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *lmp) :
-    Pair(lmp), kernel(CellKernel::WENDLAND), eos(LINEAR), cut_global(0.0), hmode(HFIXED), eta(0.0),
-    hdrift(0.0), rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), shift(0.0), gradc(nullptr),
-    tensile(0.0), tensile_n(4), tensile_dp(0.0), stress(nullptr), pairw(nullptr), pairwj(nullptr),
-    background(0.0), background_set(0), background_auto(0), background_min(0.0),
-    background_lag(-1.0), pc(nullptr), wself(nullptr), invrho0(nullptr), eosk(nullptr),
+    Pair(lmp), kernel(CellKernel::WENDLAND), cut_global(0.0), hmode(HFIXED), eta(0.0), hdrift(0.0),
+    rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), background(0.0), background_set(0),
+    background_auto(0), background_min(0.0), pc(nullptr), wself(nullptr), invrho0(nullptr),
     fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1),
     hcap(nullptr), hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
     boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
-    adhesion(nullptr), adhk(nullptr), adhering(0), adhp(nullptr), planeint(0.0), wallload(nullptr),
+    wallload(nullptr),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), jump(nullptr),
     xnear(nullptr), slot(nullptr), refreshing(1), rebuilt(1), predicted(0), measuring(0),
@@ -110,7 +99,6 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
 {
   restartinfo = 1;
   temp_set = 0;
-  tref = TREF_DEFAULT;
   muscale = 1.0;
   temperature = 0.0;
   writedata = 1;
@@ -135,13 +123,9 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairdwj);
   memory->destroy(pairr);
   memory->destroy(pairmu);
-  memory->destroy(pairw);
-  memory->destroy(pairwj);
   delete tris;
   if (allocated) {
     memory->destroy(boundary);
-    memory->destroy(adhesion);
-    memory->destroy(adhk);
     memory->destroy(setflag);
     memory->destroy(cutsq);
     memory->destroy(rho0);
@@ -151,7 +135,6 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(pc);
     memory->destroy(wself);
     memory->destroy(invrho0);
-    memory->destroy(eosk);
     memory->destroy(fluid);
     memory->destroy(hcap);
   }
@@ -164,8 +147,7 @@ void PairCellSPH::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   const int peratom = hmode != HFIXED;
-  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum) ||
-      (shift > 0.0 && !gradc) || (tensile > 0.0 && !stress);
+  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum);
   if (grown) grow_peratom();
   if (temp_set) update_viscosity();
   if (background_in.is_variable()) update_background();
@@ -228,22 +210,17 @@ void PairCellSPH::compute(int eflag, int vflag)
       prho2[i] = (pressure[i] + background) * rhoinv[i] * rhoinv[i];
       if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
       if (peratom) prho2[i] /= omega[i];
-      if (adhering && hmode == HADAPTIVE) prho2[i] += adhp[i];
     }
-  if (tensile > 0.0) artificial_stress();
 
   typedef void (PairCellSPH::*Loop)();
-#define CELLSPH_FORCES(V, E)                                                      \
-  {                                                                               \
-    {&PairCellSPH::sum_forces<V, E, 0, 0>, &PairCellSPH::sum_forces<V, E, 0, 1>}, \
-    {                                                                             \
-      &PairCellSPH::sum_forces<V, E, 1, 0>, &PairCellSPH::sum_forces<V, E, 1, 1>  \
-    }                                                                             \
+#define CELLSPH_FORCES(V, E)                                             \
+  {                                                                      \
+    &PairCellSPH::sum_forces<V, E, 0>, &PairCellSPH::sum_forces<V, E, 1> \
   }
-  static const Loop FORCES[2][2][2][2] = {{CELLSPH_FORCES(0, 0), CELLSPH_FORCES(0, 1)},
-                                          {CELLSPH_FORCES(1, 0), CELLSPH_FORCES(1, 1)}};
+  static const Loop FORCES[2][2][2] = {{CELLSPH_FORCES(0, 0), CELLSPH_FORCES(0, 1)},
+                                       {CELLSPH_FORCES(1, 0), CELLSPH_FORCES(1, 1)}};
 #undef CELLSPH_FORCES
-  (this->*FORCES[viscous][evflag ? 1 : 0][peratom][tensile > 0.0 ? 1 : 0])();
+  (this->*FORCES[viscous][evflag ? 1 : 0][peratom])();
   if (walls) {
     if (evflag)
       wall_forces<1>();
@@ -254,103 +231,6 @@ void PairCellSPH::compute(int eflag, int vflag)
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
-  // not in a run's setup nor in a minimisation
-  if (shift > 0.0 && !update->setupflag && update->whichflag == 1) shift_atoms();
-}
-
-/* ----------------------------------------------------------------------
-   artificial stress (pair_style keyword tensile): stress_i = R_i / w(dp_i/h_i)^n of owned and
-   ghost fluid atoms from their rho and pressure, R_i = eps |P_i| / rho_i^2 if P_i < 0, else 0,
-   w the kernel's shape f(q) (Monaghan 2000; doc/pair_cell_sph.md); dp_i = dp, or the atom's
-   spacing h_i/eta (per-atom h) or (m_i/rho0)^(1/d) (h fixed); h_i the atom's own h
-------------------------------------------------------------------------- */
-
-void PairCellSPH::artificial_stress()
-{
-  const double *rho = atom->dvector[irho];
-  const double *pressure = atom->dvector[ipressure];
-  const double *hv = hmode != HFIXED ? atom->dvector[ih] : nullptr;
-  const double *rmass = atom->rmass;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const double invdim = 1.0 / domain->dimension;
-  const double support = CellKernel::support(kernel);
-  for (int i = 0; i < nall; i++) {
-    const int t = type[i];
-    // with a background pressure the force's pressure is P_b + P_i
-    const double pforce = pressure[i] + background;
-    if (!fluid[t] || !(pforce < 0.0)) {
-      stress[i] = 0.0;
-      continue;
-    }
-    const double hi = hv ? hv[i] : h[t][t];
-    const double dp = tensile_dp > 0.0 ? tensile_dp
-        : hv                           ? hi / eta
-                                       : pow(rmass[i] * invrho0[t], invdim);
-    if (!(dp < support * hi)) {
-      if (i < nlocal)
-        error->one(FLERR,
-                   "Pair style cell/sph: tensile dp = {:.4g} m of atom {} (cell {}) is not inside "
-                   "the kernel support {:.4g} m (h = {:.4g} m) on step {}: W(dp) = 0",
-                   dp, atom->tag[i], atom->molecule ? atom->molecule[i] : 0, support * hi, hi,
-                   update->ntimestep);
-      stress[i] = 0.0;
-      continue;
-    }
-    // R_i = eps |P_i| / rho_i^2 (doc/pair_cell_sph.md, eq. T1), divided by f(dp_i/h_i)^n
-    const double wdp = CellKernel::W(kernel, CellKernel::Scale{1.0 / hi, 1.0, 1.0}, dp);
-    stress[i] = -tensile * pforce / (rho[i] * rho[i] * power_n(wdp, tensile_n));
-  }
-}
-
-/* ----------------------------------------------------------------------
-   particle shifting (pair_style keyword shift A): after the forces, each owned fluid atom moves
-   down the gradient of the kernel concentration C_i = sum_j (m_j/rho_j) W_ij + (1 - gamma_i)
-   (the completion across the wall counted as fluid), dx_i = -A h_i^2 grad C_i, at most
-   SHIFT_MAX h_i (Lind et al. 2012; doc/pair_cell_sph.md). Velocities are not changed.
-------------------------------------------------------------------------- */
-
-void PairCellSPH::shift_atoms()
-{
-  double **x = atom->x;
-  const double *rmass = atom->rmass;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const int peratom = hmode != HFIXED;
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  for (int i = 0; i < nall; i++) gradc[i][0] = gradc[i][1] = gradc[i][2] = 0.0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++) {
-      const int j = pairj[k];
-      // grad_i C_i += (m_j/rho_j) (1/r) dW/dr x_ij, grad_j C_j -= (m_i/rho_i) (1/r) dW/dr x_ij
-      const double ci = pairdw[k] * rhoinv[j] / rmass[i];
-      const double cj = (peratom ? pairdwj[k] : pairdw[k]) * rhoinv[i] / rmass[j];
-      for (int d = 0; d < 3; d++) {
-        const double del = x[i][d] - x[j][d];
-        gradc[i][d] += ci * del;
-        gradc[j][d] -= cj * del;
-      }
-    }
-  }
-  // the completion: grad_f (1 - gamma_f) = -sum_v grad_v D_f
-  if (walls)
-    for (int i = 0; i < nall; i++)
-      for (int d = 0; d < 3; d++) gradc[i][d] -= gradsum[i][d];
-  commode = COMM_SHIFT;
-  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    if (!fluid[type[i]]) continue;
-    const double hi = peratom ? atom->dvector[ih][i] : h[type[i]][type[i]];
-    const double a = shift * hi * hi;
-    const double len = a * sqrt(CellTriangle::dot(gradc[i], gradc[i]));
-    const double scale = len > SHIFT_MAX * hi ? SHIFT_MAX * hi / len : 1.0;
-    for (int d = 0; d < 3; d++) x[i][d] -= scale * a * gradc[i][d];
-  }
 }
 
 /* ----------------------------------------------------------------------
@@ -406,28 +286,22 @@ void PairCellSPH::density_pass(int first)
 }
 
 /* ----------------------------------------------------------------------
-   per-atom h of owned and ghost fluid atoms: h mass sets h = eta (m/rho0)^(1/d); h adaptive
-   keeps the last step's h (the start of its Newton iteration) and gives an atom without one the
-   pair_coeff h (fresh = 1 if an owned atom had none); then the kernel constants of every atom
+   per-atom h of owned and ghost fluid atoms (h adaptive): the last step's h (the start of its
+   Newton iteration), the pair_coeff h for an atom without one (fresh = 1 if an owned atom had
+   none); then the kernel constants of every atom
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::atom_h(int &fresh)
 {
   double *hv = atom->dvector[ih];
-  const double *rmass = atom->rmass;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  const double invdim = 1.0 / domain->dimension;
   fresh = 0;
   for (int i = 0; i < nall; i++) {
     const int t = type[i];
     if (!fluid[t]) continue;
-    if (hmode == HMASS) {
-      // h_i = eta (m_i / rho0)^(1/d) (doc/pair_cell_sph.md, smoothing length)
-      hv[i] = eta * pow(rmass[i] * invrho0[t], invdim);
-      if (i < nlocal && hv[i] > hcap[t]) too_long(i);
-    } else if (!(hv[i] > 0.0)) {
+    if (!(hv[i] > 0.0)) {
       hv[i] = h[t][t];
       if (i < nlocal) fresh = 1;
     }
@@ -468,10 +342,10 @@ void PairCellSPH::too_long(int i) const
   error->one(FLERR,
              "Pair cell/sph: atom {} (cell {}) needs h = {:.4g} m = {:.3g} x the h of pair_coeff "
              "{} {} on step {}, beyond the {:.4g} m ({:.3g} x) that the neighbour cutoff allows: "
-             "split the run (each run measures h again), give pair_style cell/sph a grow larger "
-             "than {} or a cutoff of at least {:.4g} m ({} h)",
+             "split the run (each run measures h again: {} x its largest h) or give pair_style "
+             "cell/sph a cutoff of at least {:.4g} m ({} h)",
              atom->tag[i], atom->molecule ? atom->molecule[i] : 0, hi, hi / h[t][t], t, t,
-             update->ntimestep, hcap[t], hcap[t] / h[t][t], grow,
+             update->ntimestep, hcap[t], hcap[t] / h[t][t], GROW,
              1.1 * hi * CellKernel::support(kernel), CellKernel::support(kernel));
 }
 
@@ -579,15 +453,12 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(disp);
   memory->destroy(jump);
   memory->destroy(xnear);
-  memory->destroy(gradc);
-  memory->destroy(stress);
   memory->destroy(slot);
   memory->destroy(hscale);
   memory->destroy(dsum);
   memory->destroy(dhdef);
   memory->destroy(dhdef0);
   memory->destroy(hbase);
-  memory->destroy(adhp);
 }
 
 void PairCellSPH::grow_peratom()
@@ -603,11 +474,8 @@ void PairCellSPH::grow_peratom()
       memory->create(dhdef, nmax, "pair:dhdef");
       memory->create(dhdef0, nmax, "pair:dhdef0");
       memory->create(hbase, nmax, "pair:hbase");
-      memory->create(adhp, nmax, "pair:adhp");
     }
   }
-  if (shift > 0.0) memory->create(gradc, nmax, 3, "pair:gradc");
-  if (tensile > 0.0) memory->create(stress, nmax, "pair:stress");
   if (!walls) return;
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
@@ -683,7 +551,6 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   }
 
   int npairs = 0;
-  const bool tens = tensile > 0.0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0];
@@ -698,7 +565,6 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     int *pj = pairj;
     double *pdw = pairdw;
     double *pmu = pairmu;
-    double *pw = pairw;
     pairfirst[ii] = npairs;
     double rhoi = 0.0, dsumi = 0.0;
 
@@ -728,8 +594,6 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       const double w = CellKernel::W<KERNEL>(p.scale, r);
       const double mmdw = mi * mj * CellKernel::dWr<KERNEL>(p.scale, r);
       const double mu = p.mu2 * mmdw;
-      // the artificial stress's kernel shape f(r/h) (doc/pair_cell_sph.md, eq. T2)
-      if (tens) pw[npairs] = CellKernel::shape<KERNEL>(r * p.scale.invh);
       rhoi += mj * w;
       if (newton_pair || j < nlocal) rho[j] += mi * w;
       pj[npairs] = j;
@@ -775,18 +639,16 @@ inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k,
   const double dim = domain->dimension;
   const double mi = atom->rmass[i], mj = atom->rmass[j];
   const double qi = r * hscale[i][0], qj = r * hscale[j][0];
-  double dwi = 0.0, dwj = 0.0, wi = 0.0, wj = 0.0;
+  double dwi = 0.0, dwj = 0.0;
   if (qi < support) {
     // rho_i += m_j W(r, h_i); dW/dh = -(d W + r dW/dr) / h (doc/pair_cell_sph.md)
     const double f = CellKernel::shape<KERNEL>(qi), g = CellKernel::slope<KERNEL>(qi);
-    wi = f;
     rhoi += mj * hscale[i][1] * f;
     dsumi -= mj * hscale[i][1] * hscale[i][0] * (dim * f + qi * qi * g);
     dwi = hscale[i][2] * g;
   }
   if (qj < support) {
     const double f = CellKernel::shape<KERNEL>(qj), g = CellKernel::slope<KERNEL>(qj);
-    wj = f;
     if (force->newton_pair || j < atom->nlocal) {
       atom->dvector[irho][j] += mi * hscale[j][1] * f;
       dsum[j] -= mi * hscale[j][1] * hscale[j][0] * (dim * f + qj * qj * g);
@@ -795,10 +657,6 @@ inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k,
   }
   pairdw[k] = mi * mj * dwi;
   pairdwj[k] = mi * mj * dwj;
-  if (tensile > 0.0) {
-    pairw[k] = wi;
-    pairwj[k] = wj;
-  }
   // viscosity with the mean of the two kernels' gradients (doc/pair_cell_sph.md)
   if (VISCOUS) pairmu[k] = 0.5 * mu2 * (pairdw[k] + pairdwj[k]);
 }
@@ -848,10 +706,6 @@ void PairCellSPH::grow_pairs(int n)
     memory->grow(pairr, maxpairs, "pair:pairr");
   }
   memory->grow(pairmu, maxpairs, "pair:pairmu");
-  if (tensile > 0.0) {
-    memory->grow(pairw, maxpairs, "pair:pairw");
-    if (hmode != HFIXED) memory->grow(pairwj, maxpairs, "pair:pairwj");
-  }
 }
 
 /* ----------------------------------------------------------------------
@@ -1141,11 +995,9 @@ template <int EVFLAG> void PairCellSPH::wall_forces()
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
     // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
-    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor);
-    // the adhesion E_a = -a_f (1 - gamma_f) adds -a_f (doc/pair_cell_sph.md, eq. A1)
+    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
     if (termfirst[i] == termfirst[i + 1]) continue;
-    double c = 1.0 - deficit[i] < gamma_min ? 0.0 : rmass[i] * prho2[i] * rho[i];
-    if (adhering) c -= adhesion_a(i);
+    const double c = 1.0 - deficit[i] < gamma_min ? 0.0 : rmass[i] * prho2[i] * rho[i];
     if (c == 0.0) continue;
     f[i][0] += c * gradsum[i][0];
     f[i][1] += c * gradsum[i][1];
@@ -1331,25 +1183,6 @@ void PairCellSPH::tabulate_phi()
     phi[k] = phi[k + 1] + half * sum;
     dphi[k] = -shell(k * phidq);
   }
-  // c_k = integral_0^s (1 - gamma of a plane at z = q h) dq = <q>/4 = (1/4) integral Phi dq
-  // (doc/pair_cell_sph.md, eq. A2), the integral of the cubic Hermite Phi between table points
-  planeint = 0.0;
-  for (int k = 0; k < n; k++)
-    planeint +=
-        0.5 * phidq * (phi[k] + phi[k + 1]) + phidq * phidq * (dphi[k] - dphi[k + 1]) / 12.0;
-  planeint *= 0.25;
-}
-
-/* ----------------------------------------------------------------------
-   a_f of the adhesion E_a = -a_f (1 - gamma_f) of fluid atom i (owned or ghost): adhk m_f / h_f
-------------------------------------------------------------------------- */
-
-double PairCellSPH::adhesion_a(int i) const
-{
-  const int t = atom->type[i];
-  if (adhk[t] == 0.0) return 0.0;
-  // a_f = W m_f / (rho0 c_k h_f): energy W per wall area of a fluid at rho0 (eq. A2)
-  return adhk[t] * atom->rmass[i] / (hmode == HFIXED ? h[t][t] : atom->dvector[ih][i]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1409,7 +1242,6 @@ void PairCellSPH::apply_eos()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int t = type[i];
-    if (adhp) adhp[i] = 0.0;
     if (!fluid[t]) continue;
     // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
     const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
@@ -1424,18 +1256,10 @@ void PairCellSPH::apply_eos()
     if (hmode != HFIXED) atom->dvector[iomega][i] = omega;
     rho[i] /= gamma;
     const double x = rho[i] * invrho0[t];
-    double e = 0.0;
-    if (eos == TAIT) {
-      const double x2 = x * x;
-      const double x6 = x2 * x2 * x2;
-      // P = (K/7) [(rho/rho0)^7 - 1], e = (K / 7 rho0) [((rho/rho0)^6 - 1)/6 + rho0/rho - 1]
-      pressure[i] = eosk[t] * (x6 * x - 1.0);
-      if (eflag_either) e = eosk[t] * invrho0[t] * ((x6 - 1.0) / 6.0 + 1.0 / x - 1.0);
-    } else {
-      // P = K (rho/rho0 - 1), e = (K / rho0) [ln(rho/rho0) + rho0/rho - 1]
-      pressure[i] = eosk[t] * (x - 1.0);
-      if (eflag_either) e = eosk[t] * invrho0[t] * (log(x) + 1.0 / x - 1.0);
-    }
+    // P = K (rho/rho0 - 1), e = (K / rho0) [ln(rho/rho0) + rho0/rho - 1]
+    const double k = bulk[t][t];
+    pressure[i] = k * (x - 1.0);
+    const double e = eflag_either ? k * invrho0[t] * (log(x) + 1.0 / x - 1.0) : 0.0;
     if (!(x > 0.0 && x <= 2.0) || !std::isfinite(pressure[i])) unstable(i);
     rhoinv[i] = 1.0 / rho[i];
     // P / (rho^2 gamma Omega): dE/drho d(rho)/d(sum m W) of E = sum m e(rho) (= P / rho^2
@@ -1443,18 +1267,6 @@ void PairCellSPH::apply_eos()
     prho2[i] = pressure[i] * rhoinv[i] * rhoinv[i] / (gamma * omega);
     volume[0] += rmass[i] * rhoinv[i];
     volume[1] += pressure[i] * rmass[i] * rhoinv[i];
-    if (adhering) {
-      const double a = adhesion_a(i);
-      // E_a = -a_f (1 - gamma_f) (doc/pair_cell_sph.md, eq. A1)
-      e -= a * deficit[i] / rmass[i];
-      // h adaptive: dE_a/dh_f dh_f/drho_f, dh_f/drho_f = -h_f/(3 rho_f) at fixed positions, with
-      // dE_a/dh_f = -a_f (dD_f/dh_f - D_f/h_f) (a_f ~ 1/h_f), on P/(rho^2 gamma Omega) (eq. A3)
-      if (hmode == HADAPTIVE) {
-        const double hi = atom->dvector[ih][i];
-        adhp[i] = a * (hi * dhdef[i] - deficit[i]) / (3.0 * rho[i] * rmass[i] * gamma * omega);
-        prho2[i] += adhp[i];
-      }
-    }
     if (eflag_global) eng_vdwl += rmass[i] * e;
     if (eflag_atom) eatom[i] += rmass[i] * e;
   }
@@ -1465,7 +1277,7 @@ void PairCellSPH::apply_eos()
     const double target = background_min - (sum[0] > 0.0 ? sum[1] / sum[0] : 0.0);
     // P_b relaxes to it over the lag time, a step at a time (eq. B4), from the target at the
     // style's first evaluation; a run's setup keeps it, so that a run split in two continues as one
-    const double lag = background_lag >= 0.0 ? background_lag : AUTO_LAG * update->dt;
+    const double lag = AUTO_LAG * update->dt;
     if (!background_set || lag == 0.0)
       background = target;
     else if (!update->setupflag)
@@ -1490,11 +1302,10 @@ void PairCellSPH::apply_eos()
 
 /* ----------------------------------------------------------------------
    pressure and viscous forces over the pairs of sum_density(); the virial is tallied per pair,
-   the energy is the equation-of-state energy of apply_eos(); TENSILE: with the artificial stress
-   (not a gradient of that energy)
+   the energy is the equation-of-state energy of apply_eos()
 ------------------------------------------------------------------------- */
 
-template <int VISCOUS, int EVFLAG, int PERATOM, int TENSILE> void PairCellSPH::sum_forces()
+template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -1523,17 +1334,8 @@ template <int VISCOUS, int EVFLAG, int PERATOM, int TENSILE> void PairCellSPH::s
       const double delz = ztmp - x[j][2];
       // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4); per-atom h:
       // -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i W(h_j))
-      double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
-                              : -pairdw[k] * (prho2i + prho2[j]);
-      if (TENSILE) {
-        // artificial stress: -m_i m_j (R_i f_i^n + R_j f_j^n) grad_i W_ij, f = W_ij / W(dp)
-        // (doc/pair_cell_sph.md, eq. T2); per-atom h: each term at its atom's h
-        if (PERATOM)
-          fpress -= pairdw[k] * stress[i] * power_n(pairw[k], tensile_n) +
-              pairdwj[k] * stress[j] * power_n(pairwj[k], tensile_n);
-        else
-          fpress -= pairdw[k] * (stress[i] + stress[j]) * power_n(pairw[k], tensile_n);
-      }
+      const double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
+                                    : -pairdw[k] * (prho2i + prho2[j]);
       double fx = delx * fpress;
       double fy = dely * fpress;
       double fz = delz * fpress;
@@ -1575,11 +1377,8 @@ void PairCellSPH::allocate()
   memory->create(h, n, n, "pair:h");
   memory->create(pc, n, n, "pair:pc");
   memory->create(boundary, n, n, "pair:boundary");
-  memory->create(adhesion, n, n, "pair:adhesion");
-  memory->create(adhk, n, "pair:adhk");
   memory->create(wself, n, "pair:wself");
   memory->create(invrho0, n, "pair:invrho0");
-  memory->create(eosk, n, "pair:eosk");
   memory->create(fluid, n, "pair:fluid");
   memory->create(hcap, n, "pair:hcap");
   for (int i = 0; i < n; i++) {
@@ -1587,19 +1386,16 @@ void PairCellSPH::allocate()
       setflag[i][j] = 0;
       rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
       boundary[i][j] = 0;
-      adhesion[i][j] = 0.0;
       pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
     }
-    wself[i] = invrho0[i] = eosk[i] = hcap[i] = adhk[i] = 0.0;
+    wself[i] = invrho0[i] = hcap[i] = 0.0;
     fluid[i] = 0;
   }
 }
 
 /* ----------------------------------------------------------------------
-   pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [eos linear|tait]
-                       [h fixed|mass <eta>|adaptive <eta>] [temp <T>] [Tref <T0>]
-                       [shift <A>] [tensile <eps> [n <n>] [dp <length>]]
-                       [background <P_b>|auto <P_min> [lag <T>]] [grow <g>]
+   pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [h fixed|adaptive <eta>]
+                       [temp <T>] [background <P_b>|auto <P_min>]
 ------------------------------------------------------------------------- */
 
 // the range of the Vogel correlation of the viscosity of water
@@ -1608,31 +1404,33 @@ static bool vogel_range(double t)
   return t >= CellWater::VOGEL_TMIN && t <= CellWater::VOGEL_TMAX;
 }
 
+// keywords of pair_style cell/sph that no scene used, and what replaces each
+static const char *const REMOVED[][2] = {
+    {"tensile",
+     "the wall boundary with 'background auto' (or a background P_b) holds fluid in tension"},
+    {"shift", "the wall boundary with 'background auto' makes the fluid at rest uniform"},
+    {"Tref", "mu of pair_coeff is the viscosity at 25 C; 'temp T' scales it as water's"},
+    {"grow",
+     "h may grow 1.5 x its largest value at a run's start; split a longer run or give a cutoff"},
+    {"eos", "the equation of state is linear, P = K (rho/rho0 - 1)"}};
+
 void PairCellSPH::settings(int narg, char **arg)
 {
   int iarg = 0;
   cut_global = 0.0;
   kernel = CellKernel::WENDLAND;
-  eos = LINEAR;
   hmode = HFIXED;
   eta = 0.0;
   temp_set = 0;
   temp = CellQuantity();
-  tref = TREF_DEFAULT;
   muscale = 1.0;
-  shift = 0.0;
-  tensile = 0.0;
-  tensile_n = 4;
-  tensile_dp = 0.0;
   background_in = CellQuantity();
   background = 0.0;
   background_set = 0;
   background_auto = 0;
   background_min = 0.0;
-  background_lag = -1.0;
-  grow = GROW;
   // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
-  // (h mode, tensile)
+  // (h mode)
   maxpairs = 0;
   if (narg > 0 && utils::is_double(arg[0])) {
     cut_global = utils::numeric(FLERR, arg[0], false, lmp);
@@ -1641,25 +1439,32 @@ void PairCellSPH::settings(int narg, char **arg)
     iarg = 1;
   }
   while (iarg < narg) {
+    for (const auto &gone : REMOVED)
+      if (strcmp(arg[iarg], gone[0]) == 0)
+        error->all(FLERR, "Pair style cell/sph: keyword '{}' was removed: {}", gone[0], gone[1]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Pair style cell/sph: keyword '{}' needs a value", arg[iarg]);
     const std::string value = arg[iarg + 1];
     if (strcmp(arg[iarg], "h") == 0) {
       if (value == HMODE_NAMES[HFIXED]) {
         hmode = HFIXED;
-      } else if (value == HMODE_NAMES[HMASS] || value == HMODE_NAMES[HADAPTIVE]) {
-        hmode = value == HMODE_NAMES[HMASS] ? HMASS : HADAPTIVE;
+      } else if (value == HMODE_NAMES[HADAPTIVE]) {
+        hmode = HADAPTIVE;
         if (iarg + 2 >= narg)
-          error->all(FLERR, "Pair style cell/sph: 'h {}' needs a value eta (h = eta (m/rho)^(1/3))",
-                     value);
+          error->all(FLERR,
+                     "Pair style cell/sph: 'h adaptive' needs a value eta (h = eta "
+                     "(m/rho)^(1/3))");
         eta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
         if (eta <= 0.0)
-          error->all(FLERR, "Pair style cell/sph: h {} eta = {} must be > 0", value, eta);
+          error->all(FLERR, "Pair style cell/sph: h adaptive eta = {} must be > 0", eta);
         iarg++;
+      } else if (value == HMODE_NAMES[1]) {
+        error->all(FLERR,
+                   "Pair style cell/sph: 'h mass' was removed: 'h adaptive <eta>' (h from each "
+                   "atom's mass and density) or h fixed");
       } else {
         error->all(FLERR,
-                   "Pair style cell/sph: unknown h mode '{}' (expected fixed, mass <eta> or "
-                   "adaptive <eta>)",
+                   "Pair style cell/sph: unknown h mode '{}' (expected fixed or adaptive <eta>)",
                    value);
       }
     } else if (strcmp(arg[iarg], "temp") == 0) {
@@ -1672,77 +1477,8 @@ void PairCellSPH::settings(int narg, char **arg)
                      "range of the Vogel correlation of the viscosity of water",
                      temp.value, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
       }
-    } else if (strcmp(arg[iarg], "Tref") == 0) {
-      tref = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(tref > 0.0))
-        error->all(FLERR, "Pair style cell/sph: reference temperature Tref = {} K must be > 0",
-                   tref);
-      if (!vogel_range(tref))
-        error->all(FLERR,
-                   "Pair style cell/sph: reference temperature Tref = {} K is outside {}-{} K "
-                   "(0-370 C), the range of the Vogel correlation of the viscosity of water",
-                   tref, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
-    } else if (strcmp(arg[iarg], "shift") == 0) {
-      shift = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(shift >= 0.0))
-        error->all(FLERR, "Pair style cell/sph: shift A = {} must be >= 0", shift);
-    } else if (strcmp(arg[iarg], "tensile") == 0) {
-      tensile = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(tensile >= 0.0))
-        error->all(FLERR, "Pair style cell/sph: tensile eps = {} must be >= 0", tensile);
-      // optional n <n> and dp <length> after eps
-      while (iarg + 2 < narg &&
-             (strcmp(arg[iarg + 2], "n") == 0 || strcmp(arg[iarg + 2], "dp") == 0)) {
-        if (iarg + 3 >= narg)
-          error->all(FLERR, "Pair style cell/sph: tensile keyword '{}' needs a value",
-                     arg[iarg + 2]);
-        if (strcmp(arg[iarg + 2], "n") == 0) {
-          const double n = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-          if (!(n >= 1.0) || n != std::floor(n) || n > 16.0)
-            error->all(FLERR, "Pair style cell/sph: tensile n = {} must be an integer 1-16", n);
-          tensile_n = static_cast<int>(n);
-        } else {
-          tensile_dp = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-          if (!(tensile_dp > 0.0))
-            error->all(FLERR, "Pair style cell/sph: tensile dp = {} must be > 0", tensile_dp);
-        }
-        iarg += 2;
-      }
     } else if (strcmp(arg[iarg], "background") == 0) {
-      if (value == "auto") {
-        if (iarg + 2 >= narg)
-          error->all(FLERR, "Pair style cell/sph: 'background auto' needs a value P_min (Pa)");
-        background_auto = 1;
-        background_min = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-        if (!(background_min >= 0.0))
-          error->all(FLERR, "Pair style cell/sph: background auto P_min = {} Pa must be >= 0",
-                     background_min);
-        CellLimits::within(error, "Pair style cell/sph: background auto P_min", background_min, 0.0,
-                           CellLimits::PRESSURE_MAX, "Pa", false);
-        iarg++;
-        // after 'auto P_min' (arg[iarg + 1]): optionally 'lag T'
-        if (iarg + 2 < narg && strcmp(arg[iarg + 2], "lag") == 0) {
-          if (iarg + 3 >= narg)
-            error->all(FLERR, "Pair style cell/sph: 'background auto ... lag' needs a time (s)");
-          background_lag = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-          if (!(background_lag >= 0.0))
-            error->all(FLERR, "Pair style cell/sph: background auto lag = {} s must be >= 0",
-                       background_lag);
-          iarg += 2;
-        }
-      } else {
-        background_in = CellQuantity::parse(lmp, arg[iarg + 1], "Pair style cell/sph: background");
-        background = background_in.value;
-        if (!std::isfinite(background))
-          error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa is not a number",
-                     background);
-        if (!background_in.is_variable())
-          CellLimits::within(error, "Pair style cell/sph: background P_b", background,
-                             -CellLimits::PRESSURE_MAX, CellLimits::PRESSURE_MAX, "Pa", false);
-      }
-    } else if (strcmp(arg[iarg], "grow") == 0) {
-      grow = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(grow > 1.0)) error->all(FLERR, "Pair style cell/sph: grow = {} must be > 1", grow);
+      iarg += parse_background(narg - iarg - 1, &arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "kernel") == 0) {
       kernel = CellKernel::parse(value);
       if (kernel < 0)
@@ -1750,21 +1486,48 @@ void PairCellSPH::settings(int narg, char **arg)
                    "Pair style cell/sph: unknown kernel '{}' (expected wendland, cubic, quintic "
                    "or lucy)",
                    value);
-    } else if (strcmp(arg[iarg], "eos") == 0) {
-      if (value == EOS_NAMES[LINEAR])
-        eos = LINEAR;
-      else if (value == EOS_NAMES[TAIT])
-        eos = TAIT;
-      else
-        error->all(FLERR, "Pair style cell/sph: unknown eos '{}' (expected linear or tait)", value);
     } else {
       error->all(FLERR,
-                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'eos', "
-                 "'h', 'temp', 'Tref', 'shift', 'tensile', 'background' or 'grow')",
+                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'h', "
+                 "'temp' or 'background')",
                  arg[iarg]);
     }
     iarg += 2;
   }
+}
+
+/* ----------------------------------------------------------------------
+   background <P_b> | auto <P_min> (arg: the values after the keyword, narg >= 1); returns the
+   number of values beyond the first
+------------------------------------------------------------------------- */
+
+int PairCellSPH::parse_background(int narg, char **arg)
+{
+  if (strcmp(arg[0], "auto") != 0) {
+    background_in = CellQuantity::parse(lmp, arg[0], "Pair style cell/sph: background");
+    background = background_in.value;
+    if (!std::isfinite(background))
+      error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa is not a number", background);
+    if (!background_in.is_variable())
+      CellLimits::within(error, "Pair style cell/sph: background P_b", background,
+                         -CellLimits::PRESSURE_MAX, CellLimits::PRESSURE_MAX, "Pa", false);
+    return 0;
+  }
+  if (narg < 2)
+    error->all(FLERR, "Pair style cell/sph: 'background auto' needs a value P_min (Pa)");
+  background_auto = 1;
+  background_min = utils::numeric(FLERR, arg[1], false, lmp);
+  if (!(background_min >= 0.0))
+    error->all(FLERR, "Pair style cell/sph: background auto P_min = {} Pa must be >= 0",
+               background_min);
+  CellLimits::within(error, "Pair style cell/sph: background auto P_min", background_min, 0.0,
+                     CellLimits::PRESSURE_MAX, "Pa", false);
+  if (narg > 2 && strcmp(arg[2], "lag") == 0)
+    error->all(FLERR,
+               "Pair style cell/sph: 'background auto ... lag' was removed: P_b follows its "
+               "target over {} steps",
+               AUTO_LAG);
+  return 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -1780,7 +1543,7 @@ void PairCellSPH::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0, adhesion_one = 0.0;
+  double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0;
   const int wall = narg >= 3 && strcmp(arg[2], "wall") == 0;
   if (wall) {
     if (ilo <= jhi && jlo <= ihi)
@@ -1788,22 +1551,16 @@ void PairCellSPH::coeff(int narg, char **arg)
                  "Pair_coeff cell/sph: {} {} wall: a type cannot be the wall of itself (give the "
                  "fluid type and the wall type)",
                  arg[0], arg[1]);
-    // pair_coeff <fluid> <wall> wall [adhesion W]
-    if (narg > 3) {
-      if (narg != 5 || strcmp(arg[3], "adhesion") != 0)
-        error->all(FLERR,
-                   "Pair_coeff cell/sph: expected 'pair_coeff <fluid> <wall> wall [adhesion W]', "
-                   "got {} args after wall",
-                   narg - 3);
-      adhesion_one = utils::numeric(FLERR, arg[4], false, lmp);
-      if (!(adhesion_one >= 0.0))
-        error->all(FLERR,
-                   "Pair_coeff cell/sph: wall adhesion W = {} J/m^2 must be >= 0 (the work of "
-                   "adhesion per wall area)",
-                   adhesion_one);
-      CellLimits::within(error, "Pair_coeff cell/sph: wall adhesion W", adhesion_one, 0.0,
-                         CellLimits::ADHESION_MAX, "J/m^2", false);
-    }
+    // pair_coeff <fluid> <wall> wall
+    if (narg > 3 && strcmp(arg[3], "adhesion") == 0)
+      error->all(FLERR,
+                 "Pair_coeff cell/sph: 'wall adhesion' was removed: the wall boundary with "
+                 "'background auto' (or a background P_b) holds the fluid on the wall");
+    if (narg > 3)
+      error->all(FLERR,
+                 "Pair_coeff cell/sph: expected 'pair_coeff <fluid> <wall> wall', got {} args "
+                 "after wall",
+                 narg - 3);
   } else if (narg == 4 && strcmp(arg[2], "file") == 0) {
     CellParams params(lmp, arg[3], "pair_coeff cell/sph");
     rho0_one = params.positive("sph_rho0", CellLimits::SPH_RHO0_MAX, "kg/m^3");
@@ -1853,7 +1610,6 @@ void PairCellSPH::coeff(int narg, char **arg)
       mu[i][j] = mu_one;
       h[i][j] = h_one;
       boundary[i][j] = wall;
-      adhesion[i][j] = adhesion_one;
       setflag[i][j] = 1;
       count++;
     }
@@ -1926,8 +1682,6 @@ void PairCellSPH::init_style()
                "whose triangles carry P_b from outside",
                pb);
   }
-  adhering = 0;
-  for (int i = 1; i <= n; i++) adhk[i] = 0.0;    // set by wetting()
   if (walls) {
     if (domain->dimension != 3)
       error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
@@ -1963,7 +1717,6 @@ void PairCellSPH::init_style()
               wallsupport, CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]));
         }
     tabulate_phi();
-    wetting();
     comm_forward = std::max(3, CellWallTriangles::COMM_SIZE);
     tris->start_run();
   }
@@ -1988,40 +1741,9 @@ void PairCellSPH::init_style()
 }
 
 /* ----------------------------------------------------------------------
-   the adhesion of each fluid type from its wall boundary pairs, whatever the order of their
-   pair_coeff lines: one W per fluid type
-------------------------------------------------------------------------- */
-
-void PairCellSPH::wetting()
-{
-  const int n = atom->ntypes;
-  std::vector<double> w(n + 1, -1.0);
-  std::vector<std::array<int, 2>> from(n + 1, {0, 0});    // the pair that set w[f]
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) {
-      if (!setflag[i][j] || !boundary[i][j]) continue;
-      const int f = setflag[i][i] ? i : j;
-      if (!setflag[f][f]) continue;    // init_one stops on such a pair
-      if (w[f] >= 0.0 && w[f] != adhesion[i][j])
-        error->all(FLERR,
-                   "Pair cell/sph: fluid type {} has wall boundaries with two adhesions W = {} "
-                   "(pair_coeff {} {}) and W = {} (pair_coeff {} {}): give each fluid type one W",
-                   f, w[f], from[f][0], from[f][1], adhesion[i][j], i, j);
-      w[f] = adhesion[i][j];
-      from[f] = {i, j};
-    }
-  for (int f = 1; f <= n; f++) {
-    // a_f = adhk m_f / h_f with adhk = W / (rho0 c_k) (doc/pair_cell_sph.md, eq. A2)
-    if (w[f] > 0.0) adhk[f] = w[f] / (rho0[f][f] * planeint);
-    if (adhk[f] > 0.0) adhering = 1;
-  }
-}
-
-/* ----------------------------------------------------------------------
-   the largest h of fluid type t that the default cutoff allows in this run: grow x the largest
-   per-atom h of the type over all ranks (h mass|adaptive, atoms that have one), so that the
-   neighbour list follows a cell that dries or takes up water; from the pair_coeff h, before any
-   atom has one, at least GROW x (the first h may differ from it by more than one run's growth)
+   the largest h of fluid type t that the default cutoff allows in this run: GROW x the largest
+   per-atom h of the type over all ranks (h adaptive, atoms that have one), so that the neighbour
+   list follows a cell that dries or takes up water; from the pair_coeff h before any atom has one
 ------------------------------------------------------------------------- */
 
 double PairCellSPH::run_hcap(int t) const
@@ -2033,7 +1755,7 @@ double PairCellSPH::run_hcap(int t) const
       if (atom->type[i] == t) hmax = std::max(hmax, hv[i]);
   }
   MPI_Allreduce(&hmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return all > 0.0 ? grow * all : std::max(grow, GROW) * h[t][t];
+  return GROW * (all > 0.0 ? all : h[t][t]);
 }
 
 /* ----------------------------------------------------------------------
@@ -2099,14 +1821,14 @@ double PairCellSPH::init_one(int i, int j)
   if (i == j) {
     wself[i] = CellKernel::W(kernel, pc[i][i].scale, 0.0);
     invrho0[i] = 1.0 / rho0[i][i];
-    eosk[i] = eos == TAIT ? bulk[i][i] / 7.0 : bulk[i][i];
   }
   return cut_global > 0.0 ? cut_global : reach;
 }
 
 /* ----------------------------------------------------------------------
-   temp T: mu(T) = mu(Tref) mu_w(T)/mu_w(Tref) of every pair, mu_w from the Vogel equation of
-   liquid water (doc/model.md §5.9); T evaluated once per step (a variable may change it)
+   temp T: mu(T) = mu mu_w(T)/mu_w(25 C) of every pair (mu of pair_coeff at 25 C), mu_w from the
+   Vogel equation of liquid water (doc/model.md §5.9); T evaluated once per step (a variable may
+   change it)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::update_viscosity()
@@ -2119,8 +1841,8 @@ void PairCellSPH::update_viscosity()
                t, temp.name.empty() ? "-" : temp.name, update->ntimestep, CellWater::VOGEL_TMIN,
                CellWater::VOGEL_TMAX);
   temperature = t;
-  // mu(T) / mu(Tref) = mu_w(T) / mu_w(Tref) (doc/model.md §5.9)
-  const double scale = CellWater::water_viscosity(t) / CellWater::water_viscosity(tref);
+  // mu(T) / mu(25 C) = mu_w(T) / mu_w(25 C) (doc/model.md §5.9)
+  const double scale = CellWater::water_viscosity(t) / CellWater::water_viscosity(TREF);
   if (scale == muscale) return;
   muscale = scale;
   const int n = atom->ntypes;
@@ -2165,7 +1887,6 @@ void PairCellSPH::write_restart(FILE *fp)
         fwrite(&bulk[i][j], sizeof(double), 1, fp);
         fwrite(&mu[i][j], sizeof(double), 1, fp);
         fwrite(&h[i][j], sizeof(double), 1, fp);
-        fwrite(&adhesion[i][j], sizeof(double), 1, fp);
       }
     }
 }
@@ -2177,6 +1898,7 @@ void PairCellSPH::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   const int me = comm->me;
+  double adhesion = 0.0;    // versions 7-11: the removed wall adhesion W, refused if > 0
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
@@ -2186,21 +1908,23 @@ void PairCellSPH::read_restart(FILE *fp)
           if (me == 0) utils::sfread(FLERR, &boundary[i][j], sizeof(int), 1, fp, nullptr, error);
           MPI_Bcast(&boundary[i][j], 1, MPI_INT, 0, world);
         }
-        double values[4];
-        if (me == 0) utils::sfread(FLERR, values, sizeof(double), 4, fp, nullptr, error);
-        MPI_Bcast(values, 4, MPI_DOUBLE, 0, world);
+        double values[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+        const int nvalues = restart_version >= 7 && restart_version < 12 ? 5 : 4;
+        if (me == 0) utils::sfread(FLERR, values, sizeof(double), nvalues, fp, nullptr, error);
+        MPI_Bcast(values, 5, MPI_DOUBLE, 0, world);
         rho0[i][j] = values[0];
         bulk[i][j] = values[1];
         mu[i][j] = values[2];
         h[i][j] = values[3];
-        // version 7: the wall boundary's adhesion W; older files had none
-        adhesion[i][j] = 0.0;
-        if (restart_version >= 7) {
-          if (me == 0) utils::sfread(FLERR, &adhesion[i][j], sizeof(double), 1, fp, nullptr, error);
-          MPI_Bcast(&adhesion[i][j], 1, MPI_DOUBLE, 0, world);
-        }
+        adhesion = std::max(adhesion, values[4]);
       }
     }
+  if (adhesion > 0.0)
+    error->all(FLERR,
+               "Pair cell/sph: the restart file has a wall boundary with adhesion W = {} J/m^2, "
+               "which was removed: the wall boundary with 'background auto' (or a background "
+               "P_b) holds the fluid on the wall",
+               adhesion);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2211,143 +1935,129 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   const int marker = -RESTART_VERSION;
   fwrite(&marker, sizeof(int), 1, fp);
   fwrite(&kernel, sizeof(int), 1, fp);
-  fwrite(&eos, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
   fwrite(&hmode, sizeof(int), 1, fp);
   fwrite(&eta, sizeof(double), 1, fp);
-  // version 4: temp (flag, number, variable name) and Tref
+  // temp (flag, number, variable name)
   fwrite(&temp_set, sizeof(int), 1, fp);
   fwrite(&temp.value, sizeof(double), 1, fp);
-  fwrite(&tref, sizeof(double), 1, fp);
   const int len = static_cast<int>(temp.name.size());
   fwrite(&len, sizeof(int), 1, fp);
   if (len > 0) fwrite(temp.name.data(), sizeof(char), len, fp);
-  // version 5: shift
-  fwrite(&shift, sizeof(double), 1, fp);
-  // version 6: tensile eps, n, dp
-  fwrite(&tensile, sizeof(double), 1, fp);
-  fwrite(&tensile_n, sizeof(int), 1, fp);
-  fwrite(&tensile_dp, sizeof(double), 1, fp);
-  // version 8: grow
-  fwrite(&grow, sizeof(double), 1, fp);
-  // version 9: background (number, variable name, auto flag, P_min)
+  // background (number, variable name, auto flag, P_min), auto's P_b now and whether it has one
   fwrite(&background_in.value, sizeof(double), 1, fp);
   const int blen = static_cast<int>(background_in.name.size());
   fwrite(&blen, sizeof(int), 1, fp);
   if (blen > 0) fwrite(background_in.name.data(), sizeof(char), blen, fp);
   fwrite(&background_auto, sizeof(int), 1, fp);
   fwrite(&background_min, sizeof(double), 1, fp);
-  // version 10: background auto lag
-  fwrite(&background_lag, sizeof(double), 1, fp);
-  // version 11: background auto's P_b now, and whether it has a value
   fwrite(&background, sizeof(double), 1, fp);
   fwrite(&background_set, sizeof(int), 1, fp);
+}
+
+/* ----------------------------------------------------------------------
+   the settings of a restart file of any version (on rank 0): those of the removed keywords
+   (version < 12: eos, Tref, shift, tensile eps n dp, grow, background auto lag) into old
+------------------------------------------------------------------------- */
+
+void PairCellSPH::read_settings(FILE *fp, Removed &old, std::string &name, std::string &bname,
+                                double &pb)
+{
+  const int v = restart_version;
+  const auto get = [&](auto *value, int n = 1) {
+    utils::sfread(FLERR, value, sizeof(*value), n, fp, nullptr, error);
+  };
+  const auto text = [&](std::string &str) {
+    int n = 0;
+    get(&n);
+    std::vector<char> chars(n);
+    if (n > 0) get(chars.data(), n);
+    str.assign(chars.begin(), chars.end());
+  };
+  if (v < 12) get(&old.eos);
+  get(&cut_global);
+  if (v >= 3) get(&hmode), get(&eta);
+  if (v >= 4) {
+    get(&temp_set);
+    get(&temp.value);
+    if (v < 12) get(&old.tref);
+    text(name);
+  }
+  if (v >= 5 && v < 12) get(&old.shift);
+  if (v >= 6 && v < 12) {
+    int n = 0;
+    double dp = 0.0;
+    get(&old.tensile), get(&n), get(&dp);
+  }
+  if (v >= 8 && v < 12) get(&old.grow);
+  if (v >= 9) {
+    get(&background_in.value);
+    text(bname);
+    get(&background_auto);
+    get(&background_min);
+  }
+  if (v >= 10 && v < 12) get(&old.lag);
+  if (v >= 11) get(&pb), get(&background_set);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void PairCellSPH::read_restart_settings(FILE *fp)
 {
+  // a file of a version before 12 may hold a removed keyword's setting: refused when it was on
+  // (grow, which changed the neighbour range only, is read and ignored)
+  Removed old;
+  std::string name, bname;
+  double pb = 0.0;
+  hmode = HFIXED;
+  eta = 0.0;
+  temp_set = 0;
+  temp.value = 0.0;
+  background_in = CellQuantity();
+  background_auto = background_set = 0;
+  background_min = 0.0;
   if (comm->me == 0) {
     int first;
     utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
     restart_version = CellRestart::version(first);
     if (first < 0) utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
     kernel = first;
-    utils::sfread(FLERR, &eos, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
-    hmode = HFIXED;
-    eta = 0.0;
-    if (restart_version >= 3) {
-      utils::sfread(FLERR, &hmode, sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &eta, sizeof(double), 1, fp, nullptr, error);
-    }
-  }
-  // temp and Tref from version 4 on; older files had none (mu as given)
-  int len = 0;
-  temp_set = 0;
-  temp.value = 0.0;
-  tref = TREF_DEFAULT;
-  std::vector<char> name;
-  if (comm->me == 0 && restart_version >= 4) {
-    utils::sfread(FLERR, &temp_set, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &temp.value, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &tref, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
-    name.resize(len);
-    if (len > 0) utils::sfread(FLERR, name.data(), sizeof(char), len, fp, nullptr, error);
-  }
-  // shift from version 5 on; older files had none
-  shift = 0.0;
-  if (comm->me == 0 && restart_version >= 5)
-    utils::sfread(FLERR, &shift, sizeof(double), 1, fp, nullptr, error);
-  // tensile from version 6 on; older files had none (off)
-  tensile = 0.0;
-  tensile_n = 4;
-  tensile_dp = 0.0;
-  if (comm->me == 0 && restart_version >= 6) {
-    utils::sfread(FLERR, &tensile, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &tensile_n, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &tensile_dp, sizeof(double), 1, fp, nullptr, error);
-  }
-  // grow from version 8 on; older files had the default
-  grow = GROW;
-  if (comm->me == 0 && restart_version >= 8)
-    utils::sfread(FLERR, &grow, sizeof(double), 1, fp, nullptr, error);
-  // background from version 9 on; older files had none
-  background_in = CellQuantity();
-  background_auto = 0;
-  background_min = 0.0;
-  int blen = 0;
-  std::vector<char> bname;
-  if (comm->me == 0 && restart_version >= 9) {
-    utils::sfread(FLERR, &background_in.value, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &blen, sizeof(int), 1, fp, nullptr, error);
-    bname.resize(blen);
-    if (blen > 0) utils::sfread(FLERR, bname.data(), sizeof(char), blen, fp, nullptr, error);
-    utils::sfread(FLERR, &background_auto, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &background_min, sizeof(double), 1, fp, nullptr, error);
-  }
-  // the auto lag from version 10 on; older files had the default
-  background_lag = -1.0;
-  if (comm->me == 0 && restart_version >= 10)
-    utils::sfread(FLERR, &background_lag, sizeof(double), 1, fp, nullptr, error);
-  double pb = 0.0;
-  background_set = 0;
-  if (comm->me == 0 && restart_version >= 11) {
-    utils::sfread(FLERR, &pb, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &background_set, sizeof(int), 1, fp, nullptr, error);
+    read_settings(fp, old, name, bname, pb);
   }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
-  MPI_Bcast(&kernel, 1, MPI_INT, 0, world);
-  MPI_Bcast(&eos, 1, MPI_INT, 0, world);
-  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&hmode, 1, MPI_INT, 0, world);
-  MPI_Bcast(&eta, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&temp_set, 1, MPI_INT, 0, world);
-  MPI_Bcast(&temp.value, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&tref, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&shift, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&tensile, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&tensile_n, 1, MPI_INT, 0, world);
-  MPI_Bcast(&tensile_dp, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&grow, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&background_in.value, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&blen, 1, MPI_INT, 0, world);
-  bname.resize(blen);
-  if (blen > 0) MPI_Bcast(bname.data(), blen, MPI_CHAR, 0, world);
-  background_in.name.assign(bname.begin(), bname.end());
-  MPI_Bcast(&background_auto, 1, MPI_INT, 0, world);
-  MPI_Bcast(&background_min, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&background_lag, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&pb, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&background_set, 1, MPI_INT, 0, world);
+  double values[8] = {cut_global,     eta, temp.value, background_in.value,
+                      background_min, pb,  old.tref,   old.shift};
+  MPI_Bcast(values, 8, MPI_DOUBLE, 0, world);
+  double olds[2] = {old.tensile, old.lag};
+  MPI_Bcast(olds, 2, MPI_DOUBLE, 0, world);
+  int flags[6] = {kernel, hmode, temp_set, background_auto, background_set, old.eos};
+  MPI_Bcast(flags, 6, MPI_INT, 0, world);
+  cut_global = values[0], eta = values[1], temp.value = values[2];
+  background_in.value = values[3], background_min = values[4], pb = values[5];
+  kernel = flags[0], hmode = flags[1], temp_set = flags[2];
+  background_auto = flags[3], background_set = flags[4];
+  const char *gone = flags[5] != 0    ? "eos tait"
+      : hmode == 1                    ? "h mass"
+      : temp_set && values[6] != TREF ? "Tref"
+      : values[7] > 0.0               ? "shift"
+      : olds[0] > 0.0                 ? "tensile"
+      : olds[1] >= 0.0                ? "background auto ... lag"
+                                      : nullptr;
+  if (gone)
+    error->all(FLERR,
+               "Pair cell/sph: the restart file (format version {}) uses '{}', which was removed "
+               "(doc/pair_cell_sph.md, removed keywords): continue it with an older cellsph",
+               restart_version, gone);
   background = background_auto && background_set ? pb : background_in.value;
-  MPI_Bcast(&len, 1, MPI_INT, 0, world);
-  name.resize(len);
-  if (len > 0) MPI_Bcast(name.data(), len, MPI_CHAR, 0, world);
-  temp.name.assign(name.begin(), name.end());
+  for (std::string *str : {&name, &bname}) {
+    int n = static_cast<int>(str->size());
+    MPI_Bcast(&n, 1, MPI_INT, 0, world);
+    str->resize(n);
+    if (n > 0) MPI_Bcast(&(*str)[0], n, MPI_CHAR, 0, world);
+  }
+  temp.name = name;
+  background_in.name = bname;
   temp.ivar = -1;
   muscale = 1.0;
 }
@@ -2375,9 +2085,7 @@ void PairCellSPH::write_data_all(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      if (boundary[i][j] && adhesion[i][j] > 0.0)
-        fprintf(fp, "%d %d wall adhesion %.16g\n", i, j, adhesion[i][j]);
-      else if (boundary[i][j])
+      if (boundary[i][j])
         fprintf(fp, "%d %d wall\n", i, j);
       else
         fprintf(fp, "%d %d %.16g %.16g %.16g %.16g\n", i, j, rho0[i][j], bulk[i][j], mu[i][j],
@@ -2385,9 +2093,8 @@ void PairCellSPH::write_data_all(FILE *fp)
 }
 
 /* ----------------------------------------------------------------------
-   pressure force between atoms i and j from their stored rho and pressure (with tensile: and
-   the artificial stress of the last compute()); energy 0: the equation-of-state energy is per
-   atom, not per pair
+   pressure force between atoms i and j from their stored rho and pressure; energy 0: the
+   equation-of-state energy is per atom, not per pair
 ------------------------------------------------------------------------- */
 
 double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
@@ -2406,21 +2113,15 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
     for (int k : {i, j})
       if (r < support * hv[k]) {
         const CellKernel::Scale sk = CellKernel::scale(kernel, domain->dimension, hv[k]);
-        double pk = (pressure[k] + background) / (omega[k] * rho[k] * rho[k]);
-        if (tensile > 0.0)
-          pk += stress[k] * power_n(CellKernel::W(kernel, {sk.invh, 1.0, 1.0}, r), tensile_n);
+        const double pk = (pressure[k] + background) / (omega[k] * rho[k] * rho[k]);
         fforce -= atom->rmass[i] * atom->rmass[j] * pk * CellKernel::dWr(kernel, sk, r);
       }
     return 0.0;
   }
   // F^p = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) (1/r) dW/dr x_ij (doc/model.md §3.4)
   const double r = sqrt(rsq);
-  double pij = (pressure[i] + background) / (rho[i] * rho[i]) +
+  const double pij = (pressure[i] + background) / (rho[i] * rho[i]) +
       (pressure[j] + background) / (rho[j] * rho[j]);
-  // the artificial stress (doc/pair_cell_sph.md, eq. T2)
-  if (tensile > 0.0)
-    pij += (stress[i] + stress[j]) *
-        power_n(CellKernel::W(kernel, {p.scale.invh, 1.0, 1.0}, r), tensile_n);
   fforce = -atom->rmass[i] * atom->rmass[j] * pij * CellKernel::dWr(kernel, p.scale, r);
   return 0.0;
 }
@@ -2473,7 +2174,6 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
       buf[m++] = atom->dvector[ih][list[k]];
       buf[m++] = atom->dvector[iomega][list[k]];
     }
-    if (adhering && hmode == HADAPTIVE) buf[m++] = adhp[list[k]];
   }
   return m;
 }
@@ -2508,7 +2208,6 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
       atom->dvector[ih][i] = buf[m++];
       atom->dvector[iomega][i] = buf[m++];
     }
-    if (adhering && hmode == HADAPTIVE) adhp[i] = buf[m++];
   }
 }
 
@@ -2535,9 +2234,8 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
     for (int i = first; i < first + n; i++) buf[m++] = jump[i];
     return m;
   }
-  double **v = commode == COMM_SHIFT ? gradc : wallload;
   for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
+    for (int d = 0; d < 3; d++) buf[m++] = wallload[i][d];
   return m;
 }
 
@@ -2561,9 +2259,8 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
     for (int k = 0; k < n; k++) jump[list[k]] += buf[m++];
     return;
   }
-  double **v = commode == COMM_SHIFT ? gradc : wallload;
   for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) v[list[k]][d] += buf[m++];
+    for (int d = 0; d < 3; d++) wallload[list[k]][d] += buf[m++];
 }
 
 /* ----------------------------------------------------------------------
@@ -2584,7 +2281,6 @@ double PairCellSPH::memory_usage()
 {
   double bytes = Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
-  if (tensile > 0.0) bytes += (nmax + (hmode != HFIXED ? 2.0 : 1.0) * maxpairs) * sizeof(double);
   if (hmode != HFIXED)
     bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
         step.capacity() * sizeof(double);

@@ -43,43 +43,25 @@ class PairCellSPH : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
-  enum Eos { LINEAR = 0, TAIT = 1 };
-  // smoothing length: the pair_coeff value, eta (m/rho0)^(1/3) per atom, or eta (m/rho)^(1/3)
-  enum HMode { HFIXED = 0, HMASS = 1, HADAPTIVE = 2 };
+  // smoothing length: the pair_coeff value or eta (m/rho)^(1/3) per atom (1, h mass, was removed)
+  enum HMode { HFIXED = 0, HADAPTIVE = 2 };
 
  protected:
-  int kernel, eos;
+  int kernel;
   double cut_global;    // neighbour cutoff from pair_style; 0 = the kernel support
-  int hmode;            // HFIXED, HMASS or HADAPTIVE (pair_style keyword h)
-  double eta;           // h = eta (m/rho0)^(1/3) or eta (m/rho)^(1/3) per atom
+  int hmode;            // HFIXED or HADAPTIVE (pair_style keyword h)
+  double eta;           // h = eta (m/rho)^(1/3) per atom
   double hdrift;        // h adaptive: largest relative change of h since the last density pass
 
   double **rho0, **bulk, **mu, **h;    // pair_coeff values per type pair
 
-  // pair_style keyword temp T [Tref T0]: every mu scaled by mu_w(T)/mu_w(Tref) of liquid water
+  // pair_style keyword temp T: every mu scaled by mu_w(T)/mu_w(25 C) of liquid water
   // (doc/model.md §5.9); T a number or an equal-style variable evaluated once per step
   int temp_set;          // 1 if pair_style has 'temp'
   CellQuantity temp;     // T (K): a number or an equal-style variable
-  double tref;           // reference temperature (K) of the pair_coeff mu, default 298.15
-  double muscale;        // mu_w(T)/mu_w(Tref) applied to pc[][].mu2, 1 without temp
+  double muscale;        // mu_w(T)/mu_w(25 C) applied to pc[][].mu2, 1 without temp
   double temperature;    // the T of the last evaluation (K)
   void update_viscosity();
-
-  // particle shifting (pair_style keyword shift A): dx_i = -A h_i^2 grad C_i after the forces
-  double shift;      // A, 0 = off
-  double **gradc;    // grad C_i of the kernel concentration C_i (owned and ghost atoms)
-  void shift_atoms();
-
-  // artificial stress (pair_style keyword tensile eps [n N] [dp length]; Monaghan 2000): in
-  // tension each fluid atom's P_i/rho_i^2 gains R_i f_i^n, R_i = eps |P_i|/rho_i^2 for P_i < 0,
-  // f_i = f(r_ij/h)/f(dp_i/h_i) of the kernel shape f (doc/pair_cell_sph.md, tensile instability)
-  double tensile;       // eps, 0 = off
-  int tensile_n;        // n
-  double tensile_dp;    // dp (m), 0: the atom's spacing (m_i/rho0)^(1/d) or h_i/eta
-  double *stress;       // R_i / f(dp_i/h_i)^n of owned and ghost fluid atoms, f the kernel shape
-  double *pairw;        // with tensile: f(r_ij/h) of each pair (per-atom h: at h_i)
-  double *pairwj;       // per-atom h with tensile: f(r_ij/h_j)
-  void artificial_stress();
 
   // background pressure (pair_style keyword background P_b): the fluid's forces use P_b + P, and
   // every wall triangle of a cell with the wall boundary carries P_b from outside, so the wall
@@ -89,7 +71,7 @@ class PairCellSPH : public Pair {
   int background_set;            // auto: P_b has a value (from the style's first evaluation on)
   int background_auto;           // background auto P_min: P_b relaxes to P_min - the fluid's mean P
   double background_min;         // P_min (Pa)
-  double background_lag;         // auto: P_b relaxes over this time (s); < 0: AUTO_LAG steps
+  int parse_background(int, char **);
   void update_background();
   template <int EVFLAG> void outside_pressure();
 
@@ -105,15 +87,13 @@ class PairCellSPH : public Pair {
 
   double *wself;          // W(0) at the h of pair_coeff I I: self term of the density, per type
   double *invrho0;        // 1 / rho0 per type (equation of state of pair_coeff I I)
-  double *eosk;           // K (linear) or K/7 (Tait) per type
   int *fluid;             // 1 if the type takes part in cell/sph
   int viscous;            // 1 if any computed pair has mu > 0
   double shared[2];       // rho0 and K shared by all fluid types, for extract()
   int irho, ipressure;    // custom per-atom vectors rho and pressure
-  // per-atom h (h mass, h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
+  // per-atom h (h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
   // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
   int ih, iomega;
-  double grow;                 // pair_style grow: h may grow grow x in one run (default cutoff)
   double *hcap;                // largest h the neighbour cutoff allows, per fluid type
   double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
   double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
@@ -131,14 +111,6 @@ class PairCellSPH : public Pair {
   double phidq;          // q step of the table of Phi(q) = kernel fraction beyond q = r/h
   std::vector<double> phi, dphi;    // Phi and dPhi/dq at the table points
   double *deficit;                  // 1 - gamma_i of fluid atom i
-  // wall-fluid adhesion through the completion (pair_coeff <fluid> <wall> wall adhesion W):
-  // E_a = -sum_f a_f (1 - gamma_f), a_f = adhk m_f / h_f, adhk = W / (rho0 c_k) per fluid type
-  double **adhesion;    // W (J/m^2) per type pair
-  double *adhk;         // W / (rho0 c_k) per fluid type, 0 without adhesion
-  int adhering;         // 1 if any fluid type has adhesion
-  double *adhp;         // h adaptive: the adhesion's term of P/(rho^2 gamma Omega) per atom
-  double planeint;    // c_k: integral over z/h of 1 - gamma beside a plane = <r/h>/4 of the kernel
-  double adhesion_a(int) const;
   double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
   // the wall triangles, each kept by its middle angle atom b (cell_wall_triangles.h); the
   // boundary pairs' cutoff is the kernel support + 2/3 of the run's edge allowance
@@ -175,11 +147,20 @@ class PairCellSPH : public Pair {
     COMM_H,
     COMM_LOAD,
     COMM_TRIANGLES,
-    COMM_SHIFT,
     COMM_AHEAD,
     COMM_JUMP
   } commode;
   int restart_version;    // format version of the restart file read, 1 = before versions
+  // the settings of the keywords removed in version 12, as an older restart file has them
+  struct Removed {
+    int eos = 0;             // 1: tait
+    double tref = 298.15;    // Tref (K)
+    double shift = 0.0;      // shift A
+    double tensile = 0.0;    // tensile eps
+    double grow = 1.5;       // grow (ignored: the neighbour range only)
+    double lag = -1.0;       // background auto lag (s); < 0: not given
+  };
+  void read_settings(FILE *, Removed &, std::string &, std::string &, double &);
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
   double *rhoinv;    // 1 / rho of owned and ghost fluid atoms
@@ -199,7 +180,7 @@ class PairCellSPH : public Pair {
   void destroy_peratom();
   void unstable(int) const;
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
-  template <int VISCOUS, int EVFLAG, int PERATOM, int TENSILE> void sum_forces();
+  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
   template <int KERNEL, int VISCOUS>
   void peratom_pair(int, int, double, double, int, double &, double &);
   template <int KERNEL, int VISCOUS> void resum_density();
@@ -222,7 +203,6 @@ class PairCellSPH : public Pair {
   template <int EVFLAG> bool contact(int, int, int, int, double);
   bool moved_since_near(double) const;
   void tabulate_phi();
-  void wetting();
   void phi_beyond(double q, double &value, double &slope) const;
   void apply_eos();
   void grow_pairs(int);

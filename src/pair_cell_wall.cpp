@@ -41,9 +41,10 @@ static const char *const TERM_NAMES[] = {"repulsion", "adhesion", "contact", "tr
                                          "selftriangles"};
 static const int TERM_VALUES[] = {2, 4, 2, 2, 2};    // required numbers after each keyword
 static constexpr int NTERMS = 5;
-// f0 r0 p1 p2 D alpha ra rc eps sigma smooth (version 3) teps tsigma (version 4) seps ssigma
-// (version 5)
-static constexpr int NPARAM = 15;
+// f0 r0 p1 p2 D alpha ra rc eps sigma teps tsigma seps ssigma; versions 3-5 had the removed
+// adhesion smooth flag after sigma (SMOOTH), version 3 ended there, 4 after tsigma
+static constexpr int NPARAM = 14;
+static constexpr int SMOOTH = 10;
 static constexpr double DEFAULT_P1 = 12.0;
 static constexpr double DEFAULT_P2 = 4.0;
 // a wall atom behind its nearest face has crossed it only if nearer than CROSS_DEPTH x the reach:
@@ -59,11 +60,12 @@ static constexpr double START_GAP = 0.62;
 // nearest of another cell's, then (from column NEAR) of the own wall's
 static constexpr int NEAR = 6;
 // 2: the settings begin with -version (1: none); 3: the adhesion's smooth flag after sigma;
-// 4: the triangles' eps and sigma after it; 5: the selftriangles' eps and sigma after those
-static constexpr int RESTART_VERSION = 5;
+// 4: the triangles' eps and sigma after it; 5: the selftriangles' eps and sigma after those;
+// 6: without the smooth flag (smooth removed)
+static constexpr int RESTART_VERSION = 6;
 
 static const char *const COEFF_USAGE =
-    "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] "
+    "expected 'pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] "
     "[contact eps sigma] [triangles eps sigma] [selftriangles eps sigma]', 'pair_coeff I J none' "
     "or 'pair_coeff I J file <parameter file> wallfluid|wallwall'";
 
@@ -641,11 +643,11 @@ inline double PairCellWall::evaluate(const Coeff &c, double rsq, int eflag, doub
       const double r = sqrt(rsq);
       const double dr = r - c.ra;
       const double e = exp(-c.alpha * dr);
-      // F = F_M(r) - taper (r - ra), F_M = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0
-      // (attractive), taper = F_M(rc)/(rc - ra) if smooth, else 0 (doc/model.md §3.7)
-      fpair += (c.two_alpha_d * e * (e - 1.0) - c.taper * dr) / r;
-      // U = U_M(r) + taper (r - ra)^2 / 2 - u_rc, U_M(r) = D [e^-2alpha(r-ra) - 2 e^-alpha(r-ra)]
-      if (eflag) u += c.D * e * (e - 2.0) + 0.5 * c.taper * dr * dr - c.u_rc;
+      // F = F_M(r) = 2 alpha D [e^-2alpha(r-ra) - e^-alpha(r-ra)] <= 0 (attractive; doc/model.md
+      // §3.7), cut at rc
+      fpair += c.two_alpha_d * e * (e - 1.0) / r;
+      // U = U_M(r) - u_rc, U_M(r) = D [e^-2alpha(r-ra) - 2 e^-alpha(r-ra)]
+      if (eflag) u += c.D * e * (e - 2.0) - c.u_rc;
     }
   }
 
@@ -689,7 +691,7 @@ void PairCellWall::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc [smooth]] [contact eps sigma]
+   pair_coeff I J [repulsion f0 r0 [p1 p2]] [adhesion D alpha ra rc] [contact eps sigma]
                   [triangles eps sigma] [selftriangles eps sigma]
    pair_coeff I J none
    pair_coeff I J file <parameter file> wallfluid|wallwall
@@ -751,10 +753,10 @@ void PairCellWall::coeff(int narg, char **arg)
         c.alpha = v[1];
         c.ra = v[2];
         c.rc = v[3];
-        if (iarg < narg && strcmp(arg[iarg], "smooth") == 0) {
-          c.smooth = 1;
-          iarg++;
-        }
+        if (iarg < narg && strcmp(arg[iarg], "smooth") == 0)
+          error->all(FLERR,
+                     "Pair_coeff cell/wall: adhesion's 'smooth' was removed: the adhesion force is "
+                     "cut at rc (as in the tissue scene)");
       } else if (term == CONTACT) {
         c.eps = v[0];
         c.sigma = v[1];
@@ -813,15 +815,11 @@ void PairCellWall::read_file(Coeff &c, const char *file, const char *which)
       c.alpha = params.positive("adhesion_alpha");
       c.ra = params.nonnegative("adhesion_ra");
       c.rc = params.positive("adhesion_rc");
-      if (params.has("adhesion_smooth")) {
-        const double smooth = params.number("adhesion_smooth");
-        if (smooth != 0.0 && smooth != 1.0)
-          error->all(FLERR,
-                     "Pair_coeff cell/wall: adhesion_smooth = {} in {} must be 0 (force cut at "
-                     "rc) or 1 (force tapered to zero at rc)",
-                     smooth, file);
-        c.smooth = (int) smooth;
-      }
+      if (params.has("adhesion_smooth"))
+        error->all(FLERR,
+                   "Pair_coeff cell/wall: adhesion_smooth in {} was removed: the adhesion force is "
+                   "cut at adhesion_rc",
+                   file);
     }
   } else {
     c.terms = CONTACT;
@@ -965,10 +963,8 @@ double PairCellWall::init_one(int i, int j)
     c.two_alpha_d = 2.0 * c.alpha * c.D;
     const double drc = c.rc - c.ra;
     const double ec = exp(-c.alpha * drc);
-    // smooth: taper = F_M(rc) / (rc - ra), so that F(rc) = 0 (doc/model.md §3.7)
-    c.taper = c.smooth ? c.two_alpha_d * ec * (ec - 1.0) / drc : 0.0;
-    // u_rc = U_M(rc) + taper (rc - ra)^2 / 2, so U(rc) = 0; inside ra U = U(ra) = -D - u_rc
-    c.u_rc = c.D * ec * (ec - 2.0) + 0.5 * c.taper * drc * drc;
+    // u_rc = U_M(rc), so U(rc) = 0; inside ra U = U(ra) = -D - u_rc
+    c.u_rc = c.D * ec * (ec - 2.0);
     c.u_below_ra = -c.D - c.u_rc;
     if (c.rc > cut) {
       cut = c.rc;
@@ -1030,21 +1026,8 @@ void PairCellWall::write_restart(FILE *fp)
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (setflag[i][j]) {
         const Coeff &c = coeffs[i][j];
-        const double v[NPARAM] = {c.f0,
-                                  c.r0,
-                                  c.p1,
-                                  c.p2,
-                                  c.D,
-                                  c.alpha,
-                                  c.ra,
-                                  c.rc,
-                                  c.eps,
-                                  c.sigma,
-                                  (double) c.smooth,
-                                  c.teps,
-                                  c.tsigma,
-                                  c.seps,
-                                  c.ssigma};
+        const double v[NPARAM] = {c.f0, c.r0,  c.p1,    c.p2,   c.D,      c.alpha, c.ra,
+                                  c.rc, c.eps, c.sigma, c.teps, c.tsigma, c.seps,  c.ssigma};
         fwrite(&c.terms, sizeof(int), 1, fp);
         fwrite(v, sizeof(double), NPARAM, fp);
       }
@@ -1064,19 +1047,29 @@ void PairCellWall::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j]) {
         int terms = 0;
-        double v[NPARAM] = {};
-        // versions 1 and 2 end each pair at sigma (no smooth flag: a cut adhesion), 3 at smooth,
-        // 4 at the triangles' sigma
-        const int nparam = restart_version >= 5 ? NPARAM
-            : restart_version >= 4              ? NPARAM - 2
-            : restart_version >= 3              ? NPARAM - 4
-                                                : NPARAM - 5;
+        double v[NPARAM + 1] = {};
+        // versions 1 and 2 end each pair at sigma, 3 at the smooth flag, 4 at the triangles'
+        // sigma; 3-5 have the smooth flag at SMOOTH
+        const int flag = restart_version >= 3 && restart_version <= 5;
+        const int nparam = restart_version >= 5 ? NPARAM + flag
+            : restart_version >= 4              ? NPARAM - 2 + flag
+            : restart_version >= 3              ? NPARAM - 4 + flag
+                                                : NPARAM - 4;
         if (me == 0) {
           utils::sfread(FLERR, &terms, sizeof(int), 1, fp, nullptr, error);
           utils::sfread(FLERR, v, sizeof(double), nparam, fp, nullptr, error);
         }
         MPI_Bcast(&terms, 1, MPI_INT, 0, world);
         MPI_Bcast(v, nparam, MPI_DOUBLE, 0, world);
+        if (flag && v[SMOOTH] != 0.0)
+          error->all(FLERR,
+                     "Pair cell/wall: the restart file (format version {}) has pair {} {} with "
+                     "adhesion 'smooth', which was removed (doc/pair_cell_wall.md): continue it "
+                     "with an older cellsph",
+                     restart_version, i, j);
+        // the values after the smooth flag one place down
+        if (flag)
+          for (int k = SMOOTH; k < NPARAM; k++) v[k] = v[k + 1];
         Coeff c = {};
         c.terms = terms;
         c.f0 = v[0];
@@ -1089,11 +1082,10 @@ void PairCellWall::read_restart(FILE *fp)
         c.rc = v[7];
         c.eps = v[8];
         c.sigma = v[9];
-        c.smooth = (int) v[10];
-        c.teps = v[11];
-        c.tsigma = v[12];
-        c.seps = v[13];
-        c.ssigma = v[14];
+        c.teps = v[10];
+        c.tsigma = v[11];
+        c.seps = v[12];
+        c.ssigma = v[13];
         coeffs[i][j] = c;
       }
     }
@@ -1127,9 +1119,7 @@ std::string PairCellWall::describe(const Coeff &c) const
 {
   std::string s;
   if (c.terms & REPULSION) s += fmt::format(" repulsion {} {} {} {}", c.f0, c.r0, c.p1, c.p2);
-  if (c.terms & ADHESION)
-    s +=
-        fmt::format(" adhesion {} {} {} {}{}", c.D, c.alpha, c.ra, c.rc, c.smooth ? " smooth" : "");
+  if (c.terms & ADHESION) s += fmt::format(" adhesion {} {} {} {}", c.D, c.alpha, c.ra, c.rc);
   if (c.terms & CONTACT) s += fmt::format(" contact {} {}", c.eps, c.sigma);
   if (c.terms & TRIANGLES) s += fmt::format(" triangles {} {}", c.teps, c.tsigma);
   if (c.terms & SELFTRIANGLES) s += fmt::format(" selftriangles {} {}", c.seps, c.ssigma);

@@ -55,12 +55,11 @@ class PairCellWall : public Pair {
     int terms;                  // bitmask of Term
     double f0, r0, p1, p2;      // repulsion
     double D, alpha, ra, rc;    // adhesion
-    int smooth;                 // adhesion force tapered to zero at rc (1) or cut there (0)
     double eps, sigma;          // contact
     double teps, tsigma;        // triangles: contact with the other walls' triangles
     double seps, ssigma;        // selftriangles: contact with the own wall's far triangles
     int half1, half2;           // p1/2, p2/2 when they are integers (powint), else 0
-    double r0sq, rasq, rcsq, two_alpha_d, taper, u_rc, u_below_ra, sigsq, contactsq;
+    double r0sq, rasq, rcsq, two_alpha_d, u_rc, u_below_ra, sigsq, contactsq;
     double tsigsq, treach;    // triangles: sigma^2, reach 2^(1/6) sigma
     double ssigsq, sreach;    // selftriangles: sigma^2, reach 2^(1/6) sigma
     double paircutsq;         // (reach of the pair terms)^2: repulsion, adhesion, contact

@@ -6,10 +6,16 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph     the pair cell/sph payload of version 6 to 11 in
-                                               the layout of version 5 (no tensile eps, n, dp; no
-                                               wall adhesion W per type pair; no grow; no
-                                               background)
+  restart_version.py IN OUT older cell/sph [11|5 [NAME=VALUE...]]
+                                               the pair cell/sph payload of version 12 in the
+                                               layout of version 11 (default) or 5, with the
+                                               settings of the keywords removed in version 12
+                                               (NAME: eos, hmode, tref, shift, tensile, grow, lag,
+                                               adhesion; default: off)
+  restart_version.py IN OUT older cell/wall [smooth=0|1]
+                                               the pair cell/wall payload of version 6 in the
+                                               layout of version 5, every pair with an
+                                               adhesion with the removed smooth flag (default 0)
   restart_version.py IN OUT older cell/bending the dihedral cell/bending payload of version 2 in
                                                the layout of version 1 (no form per type)
 
@@ -93,36 +99,74 @@ def bending_to_version1(data, at):
     struct.pack_into("=d", data, at, -1.0)
 
 
-def sph_to_version5(data, at, version):
-    """Drop the version-6 settings (tensile eps double, n int, dp double) of the pair cell/sph
-    payload whose marker is at offset at: after the marker, kernel eos (int), cutoff (double),
-    hmode (int), eta (double), temp flag (int), T, Tref (double), name length (int), name, shift
-    (double) come first; version 7: also the wall adhesion W (double) after each set type pair's
-    setflag, boundary (int) and rho0, K, mu, h (double); version 8: also grow (double) after dp;
-    version 9: also the background P_b (double), its variable name's length (int) and name, the
-    auto flag (int) and P_min (double); version 10: also the auto lag (double); version 11: also
-    the auto P_b now (double) and whether it is set (int)."""
-    (length,) = struct.unpack_from("=i", data, at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8)
-    start = at + 4 * 3 + 8 + 4 + 8 + 4 + 8 + 8 + 4 + length + 8
-    end = start + 8 + 4 + 8 + (8 if version >= 8 else 0)
-    if version >= 9:
-        (blen,) = struct.unpack_from("=i", data, end + 8)
-        end += 8 + 4 + blen + 4 + 8
-    if version >= 10:
-        end += 8
-    if version >= 11:
-        end += 8 + 4
-    del data[start:end]
-    if version >= 7:
-        n = header_count(data, 16, 17, "NTYPES")
-        pos = start
-        for _ in range(n * (n + 1) // 2):
-            (setflag,) = struct.unpack_from("=i", data, pos)
-            pos += 4
-            if setflag:
-                pos += 4 + 4 * 8
-                del data[pos:pos + 8]
-    struct.pack_into("=i", data, at, -5)
+def sph_to_older(data, at, version, target, removed):
+    """Write the version-12 pair cell/sph payload whose marker is at offset at in the layout of
+    version target (11 or 5), with the settings of the keywords removed in version 12 from removed
+    (NAME=VALUE: eos 0 linear / 1 tait, hmode 0 / 1 mass / 2, tref, shift, tensile, grow, lag,
+    adhesion; default: all off). Version 12, after the marker: kernel (int), cutoff (double), hmode
+    (int), eta (double), temp flag (int), T (double), name length (int), name, background P_b
+    (double), its name's length (int) and name, auto flag (int), P_min, P_b now (double), whether it
+    is set (int); then per type pair I <= J setflag (int) and if set boundary (int), rho0, K, mu, h
+    (double). Version 11 has eos (int) after the kernel, Tref after T, shift, tensile eps (double),
+    n (int), dp, grow (double) after the name, the lag (double) after P_min, and each set pair's
+    adhesion W (double) after h; version 5 ends after shift (no background) with no W."""
+    if version != 12:
+        sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 12")
+    old = {"eos": 0, "hmode": None, "tref": 298.15, "shift": 0.0, "tensile": 0.0, "grow": 1.5,
+           "lag": -1.0, "adhesion": 0.0}
+    for item in removed:
+        key, value = item.split("=")
+        old[key] = float(value)
+    kernel, cut, hmode, eta, tflag, temp, length = struct.unpack_from("=idididi", data, at + 4)
+    pos = at + 4 + struct.calcsize("=idididi")
+    name = bytes(data[pos:pos + length])
+    pos += length
+    (pb, blen) = struct.unpack_from("=di", data, pos)
+    bname = bytes(data[pos + 12:pos + 12 + blen])
+    pos += 12 + blen
+    bauto, pmin, pbnow, bset = struct.unpack_from("=iddi", data, pos)
+    pos += struct.calcsize("=iddi")
+    hmode = int(old["hmode"]) if old["hmode"] is not None else hmode
+    out = struct.pack("=iiididid", -target, kernel, int(old["eos"]), cut, hmode, eta, tflag, temp)
+    out += struct.pack("=d", old["tref"]) + struct.pack("=i", length) + name
+    out += struct.pack("=d", old["shift"])
+    if target == 11:
+        out += struct.pack("=didd", old["tensile"], 4, 0.0, old["grow"])
+        out += struct.pack("=di", pb, blen) + bname + struct.pack("=idd", bauto, pmin, old["lag"])
+        out += struct.pack("=di", pbnow, bset)
+    n = header_count(data, 16, 17, "NTYPES")
+    pairs = b""
+    for _ in range(n * (n + 1) // 2):
+        (setflag,) = struct.unpack_from("=i", data, pos)
+        pairs += data[pos:pos + 4]
+        pos += 4
+        if setflag:
+            pairs += data[pos:pos + 4 + 4 * 8]
+            pos += 4 + 4 * 8
+            if target == 11:
+                pairs += struct.pack("=d", old["adhesion"])
+    data[at:pos] = out + pairs
+
+
+def wall_to_version5(data, at, version, smooth):
+    """Write the version-6 pair cell/wall payload whose marker is at offset at in the layout of
+    version 5, with the removed adhesion smooth flag (0 or 1) of every set type pair: after the
+    marker the cutoff (double), then per type pair I <= J setflag (int) and if set the terms
+    (int) and 14 doubles (f0 r0 p1 p2 D alpha ra rc eps sigma teps tsigma seps ssigma); version 5
+    has the flag (double) after sigma."""
+    if version != 6:
+        sys.exit(f"restart_version.py: cell/wall payload version {version}, expected 6")
+    n = header_count(data, 16, 17, "NTYPES")
+    pos = at + 16
+    for _ in range(n * (n + 1) // 2):
+        (setflag,) = struct.unpack_from("=i", data, pos)
+        pos += 4
+        if setflag:
+            (terms,) = struct.unpack_from("=i", data, pos)
+            pos += 4 + 10 * 8
+            data[pos:pos] = struct.pack("=d", smooth if terms & 2 else 0.0)    # 2: adhesion
+            pos += 8 + 4 * 8
+    struct.pack_into("=d", data, at, -5.0)
 
 
 def main():
@@ -132,7 +176,7 @@ def main():
     data = bytearray(open(src, "rb").read())
     for style in styles:
         if style not in LAYOUT or (mode == "unversioned" and style in ("cell/sph", "cell/lamella", "cell/bending")) or (
-                mode == "older" and style not in ("cell/turgor", "cell/sph", "cell/bending")):
+                mode == "older" and style not in ("cell/turgor", "cell/sph", "cell/wall", "cell/bending")):
             sys.exit(f"restart_version.py: cannot make '{style}' {mode}")
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
@@ -140,10 +184,15 @@ def main():
         if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5, 6):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
-            if version not in (6, 7, 8, 9, 10, 11):
-                sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 6 to 11")
-            sph_to_version5(data, at, version)
+            target = int(styles[1]) if len(styles) > 1 else 11
+            sph_to_older(data, at, version, target, styles[2:])
+            print(f"restart_version.py: {style} payload version {version} -> {target}")
+            break
+        elif style == "cell/wall" and mode == "older":
+            smooth = float(styles[1].split("=")[1]) if len(styles) > 1 else 0.0
+            wall_to_version5(data, at, version, smooth)
             print(f"restart_version.py: {style} payload version {version} -> 5")
+            break
         elif style == "cell/bending" and mode == "older":
             if version != 2:
                 sys.exit(f"restart_version.py: cell/bending payload version {version}, expected 2")

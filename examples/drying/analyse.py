@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Summary of the drying example (run by run.sh in out/): for each run TAG (dry_TAG.dat,
-tlp_TAG.txt, intersections_TAG.txt, log.TAG, wall_TAG.dump, fluid_TAG.dump) the drying time, the
+intersections_TAG.txt, log.TAG, wall_TAG.dump, fluid_TAG.dump) the drying time, the
 turgor loss point, the section descriptors (the mean and spread of the sections x, y, z through
 the centroid) and volume at X/X0 = 0.5 and at the end against Karunasena et al. 2014 (dried Gala
 apple: area -60 %, Feret -40 %, perimeter -30 %, roundness and elongation +5 %, compactness
@@ -90,14 +90,37 @@ def stability(tag, reach, rs):
     return out
 
 
+def cuts(tag, rs, tlp):
+    """cut_TAG_NAME.dat for the pictures (run.sh): x y of the wall atoms (block 0) and fluid atoms
+    (block 1) within 8 um of the plane z through the wall's centre, at the snapshots fresh (the
+    first), tlp (the turgor loss point), half (X/X0 <= 0.5) and dry (the last)"""
+    want = {"fresh": rs[0]["t"], "half": next((r["t"] for r in rs if r["X"] <= 0.5), None),
+            "dry": rs[-1]["t"]}
+    if tlp:
+        want["tlp"] = tlp["t"]
+    with open(f"dry_{tag}.dat") as f:
+        head = f.readline()
+    tstep = float(re.search(r"accel (\S+),", head).group(1)) * float(re.search(r"dt (\S+),", head).group(1))
+    first = None
+    for (step, wc, wr), (_, fc, fr) in zip(snapshots(f"wall_{tag}.dump"), snapshots(f"fluid_{tag}.dump")):
+        first = step if first is None else first
+        t = (step - first) * tstep
+        names = [n for n, tn in want.items() if tn is not None and abs(t - tn) <= 1e-6 * tstep + 1e-9 * tn]
+        if not names:
+            continue
+        wall, fluid = positions(wc, wr), positions(fc, fr)
+        zc = statistics.mean(p[2] for p in wall.values())
+        for name in names:
+            with open(f"cut_{tag}_{name}.dat", "w") as f:
+                for block in (wall, fluid):
+                    f.writelines(f"{p[0]:.9e} {p[1]:.9e}\n" for p in block.values() if abs(p[2] - zc) < 8e-6)
+                    f.write("\n\n")
+
+
 def reach_of(tag):
-    """the reach of the protoplast on the wall from the run's log: the adhesion's rc = h/2.5 +
-    well h, or without an adhesion h/2.5 + 0.45 h (the scene's former well) of the fluid's h"""
+    """the reach of the protoplast on the wall: h/2.5 + 0.45 h of the fluid's h (from the run's log)"""
     with open(f"log.{tag}") as f:
         log = f.read()
-    m = re.search(r"pair_coeff 1 2 cell/wall adhesion [0-9.eE+-]+ [0-9.eE+-]+ [0-9.eE+-]+ ([0-9.eE+-]+)", log)
-    if m:
-        return float(m.group(1))
     h = float(re.search(r"pair_coeff\s+1 1 cell/sph [0-9.eE+-]+ [0-9.eE+-]+ [0-9.eE+-]+ ([0-9.eE+-]+)", log).group(1))
     return h / 2.5 + 0.45 * h
 
@@ -127,13 +150,14 @@ def main(tags):
     for tag in tags:
         rs = rows(tag)
         r0, half, end = rs[0], at(rs, 0.5), rs[-1]
-        tlp = first_line(f"tlp_{tag}.txt")
+        tlp = next((r for r in rs if r["PT"] <= 0.0), None)
         inter = first_line(f"intersections_{tag}.txt")
         acct = max(abs(r["moved"] - r["dMfluid"]) for r in rs) / abs(rs[-1]["dMfluid"] or 1)
         print(f"\n{tag}: X/X0 = {end['X']:.3f} after {end['t'] / 60:.1f} min of physical time "
               f"(X = {end['X_db']:.3f} kg/kg); wall-clock {wall_time(tag)} s")
-        if tlp != "n/a":
-            print(f"  turgor loss point (P_T <= 0): X/X0 = {float(tlp[1]):.3f} at {float(tlp[0]) / 60:.1f} min")
+        if tlp:
+            print(f"  turgor loss point (P_T <= 0): X/X0 = {tlp['X']:.3f} at {tlp['t'] / 60:.1f} min")
+        cuts(tag, rs, tlp)
         print("  quantity          X/X0=0.5   end    apple (Karunasena 2014, dried)   sections x, y, z")
         for key, name in (("A", "section area"), ("P", "perimeter"), ("F", "Feret"), ("V", "volume")):
             ref = f"{APPLE[key]:.2f}" if key in APPLE else "-"

@@ -12,7 +12,7 @@
 # shared with about twenty other processes; the seed resolution takes about 160 s of CPU time per
 # temperature on one rank.
 set -euo pipefail
-extra=("$@")    # extra lmp -var NAME VALUE pairs for in.drying, e.g. -var hmode adaptive
+extra=("$@")    # extra lmp -var NAME VALUE pairs for in.drying, e.g. -var RH 0.3
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${CELLSPH_BUILD:-$here/../../build}
 np=${NP:-2}
@@ -21,8 +21,8 @@ elong=${ELONG:-}    # ELONG=1.45: start from a prolate cell of that elongation (
 out=$here/out
 mkdir -p "$out"
 cd "$out"
-rm -f dry_*.dat final_*.txt tlp_*.txt wall_*.dump pic_*.png fig_*.png summary.txt intersections_*.txt \
-  sections_*.dat planes_*.txt
+rm -f dry_*.dat final_*.txt wall_*.dump fluid_*.dump pic_*.png cut_*.dat fig_*.png summary.txt \
+  intersections_*.txt sections_*.dat planes_*.txt
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
 if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -52,7 +52,7 @@ fi
 for run in "${runs[@]}"; do
   set -- $run
   t0=$(date +%s)
-  "${lmp[@]}" -in "$here/in.drying" -var tag "$1" -var T "$2" -var accel "$3" -var images 1 "${scale[@]}" \
+  "${lmp[@]}" -in "$here/in.drying" -var tag "$1" -var T "$2" -var accel "$3" "${scale[@]}" \
     "${extra[@]}" -log "log.$1" >"$1.screen"
   stamp "$1: $(grep '^dried' "$1.screen") [$(($(date +%s) - t0)) s]"
   python3 "$here/../../tools/wall_self_intersection.py" cell.data "wall_$1.dump" --quiet --out "intersections_$1.txt" ||
@@ -124,5 +124,13 @@ plot 'stability_T70.txt' using 2:5 with lines lw 2 title 'share of fluid atoms w
      'stability_T40.txt' using 2:5 with lines dt 2 title 'within dx/2, 40 C', 'stability_T40.txt' using 2:6 with lines dt 2 title 'held, 40 C'
 unset multiplot
 GP
+# the pictures: the atoms within 8 um of the plane z through the cell's centre (analyse.py's
+# cut_TAG_NAME.dat), seen from +z as a micrograph of a section: wall green, fluid blue
+for cut in cut_*.dat; do
+  name=${cut#cut_}
+  gnuplot -e "set terminal pngcairo size 700,700; set output 'pic_${name%.dat}.png'; set size ratio -1; \
+    unset key; unset border; unset tics; plot '$cut' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb 'forest-green', \
+    '' index 1 using 1:2 with points pt 7 ps 0.6 lc rgb 'royalblue'"
+done
 stamp "done; outputs in $out"
 cat summary.txt

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# examples/tissue (README.md): a slab of 54 apple cells, 6 deep, dried from its top face in air at
-# 60 C (its surface cooled by the evaporation) on 2 ranks, then the analysis (figures and tables in
-# out/). One command:
+# examples/tissue (README.md): a slab of 54 apple cells, 6 deep, settled (in.settle) and dried from
+# its top face in air at 60 C (its surface cooled by the evaporation; in.tissue) on 2 ranks, then
+# the analysis (figures and tables in out/). One command:
 #   bash examples/tissue/run.sh [extra lmp -var NAME VALUE pairs, e.g. -var maxout 20]
 # Environment: CELLSPH_BUILD (build folder, default build/), NP (MPI ranks, default 2), CELLS
 # (cells along x y z, default "3 3 6"), EXCHANGE (extra fix cell/turgor keywords, default the
@@ -27,6 +27,8 @@ start=$(date +%s)
   --dx 24e-6 --junction-gap 10e-6 --wall-mass 1e-12 --seed 1 --dihedrals --out tissue.data > cellgen.txt
 lcc=$(awk "BEGIN { printf \"%.6g\", 5e-14 * ${LSCALE:-100} }")
 exchange=${EXCHANGE-exchange $lcc bondtype 2 areas tissue.data.junctions}
+# the fresh slab settled (in.settle: settled.restart, fresh.dump), then dried (in.tissue)
+mpirun -np "$np" "$build/bin/lmp" -in "$here/in.settle" "$@" -log log.settle > screen_settle.txt
 mpirun -np "$np" "$build/bin/lmp" -in "$here/in.tissue" -var exchange "$exchange" \
   "$@" -var accel "${ACCEL:-8e7}" -var cooling "${COOLING:-yes}" -var maxout "${MAXOUT:-45}" \
   -log log.lammps > screen.txt
