@@ -5,7 +5,8 @@
 # end) and writes start.restart (on 1 rank). From there each variant runs NSTEPS (default 4000)
 # steps of drying: as 1, 2, 10 and 100 equal `run` commands, and as NSTEPS/2 steps, write_restart,
 # and NSTEPS/2 steps in a second LAMMPS process (read_restart); each on 1 and 2 ranks. With the
-# default lengths every run boundary falls one step before a transfer (fix cell/turgor 10).
+# default lengths every run boundary falls one step before a transfer (fix cell/turgor 10); with
+# NWARM=1004 each falls between transfers. Numbers: doc/notes/2026-12-07-run-split.md.
 # Prints two tables:
 #  1. against the single run on the same ranks: the largest relative difference of the cell's
 #     fluid mass M, wall volume V and fluid volume sum m/rho, and of the turgor P_T (relative to
@@ -121,7 +122,7 @@ for np in nps:
 print()
 print("Table 2: mean SPH pressure Pbar at the run boundaries (Pa) against its step-to-step change")
 print(f"{'ranks':>5} {'variant':>8} | {'bounds':>6} {'max|jump|':>9} {'med|jump|':>9}"
-      f" {'max dV/V':>8} | {'step change in the single run: median':>37} {'max':>7} |"
+      f" {'dsum m/rho':>10} | {'step change in the single run: median':>37} {'max':>7} |"
       f" {'split run, away from bounds: median':>35} {'max':>7}")
 for np in nps:
     one = dynamics(runs[np, "n1"])
@@ -139,7 +140,7 @@ for np in nps:
             for p, s in zip(rows[2:], rows[3:]):
                 away.append(abs(float(s[5]) - float(p[5])))
         print(f"{np:>5} {v:>8} | {len(jumps):>6} {max(jumps):9.3g} {statistics.median(jumps):9.3g}"
-              f" {max(dvs):8.1e} | {statistics.median(d1):37.3g} {max(d1):7.3g} |"
+              f" {max(dvs):10.1e} | {statistics.median(d1):37.3g} {max(d1):7.3g} |"
               f" {statistics.median(away):35.3g} {max(away):7.3g}")
 EOF
 echo "runs in $work; CPU seconds (user system) of each: $(for f in log.*.cpu; do printf '%s %s; ' "${f%.cpu}" "$(cat "$f")"; done)"
