@@ -134,12 +134,13 @@ void CellAccel::sample(double *p, const Cycle &at, double turgor, double rate,
 
 /* ----------------------------------------------------------------------
    the cell's lag e = G (P_T - P_qs) / (dM/dt) at the end of the open window and its standard
-   error se: P_T from the least-squares line through the open window's samples at the seal, P_qs
-   the mean of the sealed window's second half (doc/model.md §5.12); false without enough samples
-   or flux
+   error se, |dM/dt| raised to the largest of the cells' (flux: a cell whose flux is small moves
+   little water, its shortfall counts against the largest): P_T from the least-squares line
+   through the open window's samples at the seal, P_qs the mean of the sealed window's second half
+   (doc/model.md §5.12); false without enough samples or flux
 ------------------------------------------------------------------------- */
 
-bool CellAccel::lag(const double *p, bigint open, double &e, double &se) const
+bool CellAccel::lag(const double *p, bigint open, double flux, double &e, double &se) const
 {
   const double n = open_samples, m = sealed_samples;
   if (n < 3 || m < 2 || p[RATE] == 0.0) return false;
@@ -154,9 +155,11 @@ bool CellAccel::lag(const double *p, bigint open, double &e, double &se) const
   // P_qs = the sealed mean, variance s^2 / m
   const double psealed = p[SY2] / m;
   const double vsealed = std::max(0.0, p[SYY2] - p[SY2] * p[SY2] / m) / ((m - 1.0) * m);
-  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value
-  e = p[COND] * (popen - psealed) / p[RATE];
-  se = p[COND] * sqrt(vopen + vsealed) / fabs(p[RATE]);
+  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value, relative to
+  // the largest flux of the cells (flux) where that is larger
+  const double scale = std::max(fabs(p[RATE]), flux);
+  e = p[COND] * (popen - psealed) / scale * (p[RATE] > 0.0 ? 1.0 : -1.0);
+  se = p[COND] * sqrt(vopen + vsealed) / scale;
   return std::isfinite(e) && std::isfinite(se);
 }
 
@@ -215,10 +218,13 @@ void CellAccel::adapt(bigint open, const std::vector<const double *> &probes, bo
 {
   double factor = cells ? 2.0 : 1.0;
   bool none = true;
-  double largest = 0.0, largest_se = 0.0;
+  double largest = 0.0, largest_se = 0.0, flux = 0.0, all_flux;
+  // the largest |dM/dt| of the cells' last open transfer
+  for (const double *p : probes) flux = std::max(flux, fabs(p[RATE]));
+  MPI_Allreduce(&flux, &all_flux, 1, MPI_DOUBLE, MPI_MAX, world);
   for (const double *p : probes) {
     double e, se, f = 1.0;
-    if (lag(p, open, e, se)) {
+    if (lag(p, open, all_flux, e, se)) {
       if (e - 2.0 * se > tol)
         f = std::max(0.5, tol / e);
       else if (e + 2.0 * se < tol)

@@ -121,7 +121,7 @@ class CellAccel : protected Pointers {
   double least, last;    // the shortest longest wall edge since the start, the last one (0: none)
   double growth;         // the running mean of the longest edge's growth per transfer
 
-  bool lag(const double *probe, bigint every, double &e, double &se) const;
+  bool lag(const double *probe, bigint every, double flux, double &e, double &se) const;
   double longest_edge() const;
 };
 
