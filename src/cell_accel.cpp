@@ -6,8 +6,11 @@
 
 #include "cell_accel.h"
 
+#include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
+#include "math_const.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +22,8 @@ using namespace LAMMPS_NS;
 
 CellAccel::CellAccel(LAMMPS *lmp) :
     Pointers(lmp), value(1.0), automatic(0), pending(0), lag_estimate(0.0), lag_error(0.0),
-    every(0), hold(0), open_samples(0), sealed_samples(0), tol(0.0), lo(1.0), hi(MAX), start(0.0)
+    edge(0.0), every(0), hold(0), open_samples(0), sealed_samples(0), tol(0.0), lo(1.0), hi(MAX),
+    start(0.0), change(CHANGE), least(0.0), last(0.0), growth(0.0)
 {
 }
 
@@ -40,12 +44,18 @@ int CellAccel::parse(int narg, char **arg, const std::string &command)
   const double t = utils::numeric(FLERR, arg[1], false, lmp);
   if (!(t > 0.0 && t < 1.0))
     error->all(FLERR, "{}: accel auto tolerance = {} must be in (0, 1)", command, t);
-  double min = 1.0, max = MAX, first = 0.0;
+  double min = 1.0, max = MAX, first = 0.0, most = CHANGE;
   int open = 0, sealed = 0, used = 2;
   while (used + 1 < narg) {
     const std::string key = arg[used];
-    if (key != "min" && key != "max" && key != "start" && key != "every" && key != "hold") break;
-    if (key == "every" || key == "hold") {
+    if (key != "min" && key != "max" && key != "start" && key != "every" && key != "hold" &&
+        key != "change")
+      break;
+    if (key == "change") {
+      most = utils::numeric(FLERR, arg[used + 1], false, lmp);
+      if (!(most > 0.0 && most <= 0.1))
+        error->all(FLERR, "{}: accel auto change = {} must be > 0 and <= 0.1", command, most);
+    } else if (key == "every" || key == "hold") {
       const int n = utils::inumeric(FLERR, arg[used + 1], false, lmp);
       if (n < 4)
         error->all(FLERR, "{}: accel auto {} = {} must be >= 4 transfers", command, key, n);
@@ -70,20 +80,22 @@ int CellAccel::parse(int narg, char **arg, const std::string &command)
   start = first;
   every = open;
   hold = sealed;
+  change = most;
   return used;
 }
 
 /* ----------------------------------------------------------------------
    transfer j is at position (j - 1) % (every + hold) of its cycle: open for every transfers
-   (default 20 offset times tau, at least 8), then sealed for hold (default 5 tau, at least 4);
-   the second half of each is sampled (doc/model.md §5.12)
+   (default 20 offset times tau, in [8, 200]), then sealed for hold (default 5 tau, in [4, 50]):
+   a cycle ends within 250 transfers; the second half of each is sampled (doc/model.md §5.12)
 ------------------------------------------------------------------------- */
 
 CellAccel::Cycle CellAccel::cycle(bigint j, bool transfer, double offset, double step)
 {
   Cycle at;
-  at.every = every > 0 ? every : std::max((bigint) 8, (bigint) lround(20.0 * offset / step));
-  at.hold = hold > 0 ? hold : std::max((bigint) 4, (bigint) lround(5.0 * offset / step));
+  const double taus = offset / step;
+  at.every = every > 0 ? every : std::min((bigint) 200, std::max((bigint) 8, lround(20.0 * taus)));
+  at.hold = hold > 0 ? hold : std::min((bigint) 50, std::max((bigint) 4, lround(5.0 * taus)));
   at.position = automatic ? (j - 1) % (at.every + at.hold) : 0;
   at.sealed = automatic && at.position >= at.every;
   at.sample = automatic && transfer &&
@@ -122,12 +134,13 @@ void CellAccel::sample(double *p, const Cycle &at, double turgor, double rate,
 
 /* ----------------------------------------------------------------------
    the cell's lag e = G (P_T - P_qs) / (dM/dt) at the end of the open window and its standard
-   error se: P_T from the least-squares line through the open window's samples at the seal, P_qs
-   the mean of the sealed window's second half (doc/model.md §5.12); false without enough samples
-   or flux
+   error se, |dM/dt| raised to the largest of the cells' (flux: a cell whose flux is small moves
+   little water, its shortfall counts against the largest): P_T from the least-squares line
+   through the open window's samples at the seal, P_qs the mean of the sealed window's second half
+   (doc/model.md §5.12); false without enough samples or flux
 ------------------------------------------------------------------------- */
 
-bool CellAccel::lag(const double *p, bigint open, double &e, double &se) const
+bool CellAccel::lag(const double *p, bigint open, double flux, double &e, double &se) const
 {
   const double n = open_samples, m = sealed_samples;
   if (n < 3 || m < 2 || p[RATE] == 0.0) return false;
@@ -142,9 +155,11 @@ bool CellAccel::lag(const double *p, bigint open, double &e, double &se) const
   // P_qs = the sealed mean, variance s^2 / m
   const double psealed = p[SY2] / m;
   const double vsealed = std::max(0.0, p[SYY2] - p[SY2] * p[SY2] / m) / ((m - 1.0) * m);
-  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value
-  e = p[COND] * (popen - psealed) / p[RATE];
-  se = p[COND] * sqrt(vopen + vsealed) / fabs(p[RATE]);
+  // e = G (P_T - P_qs) / (dM/dt): the flux's shortfall from its quasi-static value, relative to
+  // the largest flux of the cells (flux) where that is larger
+  const double scale = std::max(fabs(p[RATE]), flux);
+  e = p[COND] * (popen - psealed) / scale * (p[RATE] > 0.0 ? 1.0 : -1.0);
+  se = p[COND] * sqrt(vopen + vsealed) / scale;
   return std::isfinite(e) && std::isfinite(se);
 }
 
@@ -160,6 +175,22 @@ double CellAccel::first(double conductance, double slope, double eps, double mas
   // 1/tau_w = G (eps/M + slope), dP/dM = eps/M for a cell full of fluid
   const double relax = conductance * (eps / mass + slope);
   return relax > 0.0 ? tol / (relax * offset) : HUGE_VAL;
+}
+
+/* ----------------------------------------------------------------------
+   the cell's elastic modulus eps = V dP/dV: the fluid's K + P_SPH, in series with the thin
+   Neo-Hookean wall when the bond style gives G t0 (doc/model.md §6, §9.3)
+------------------------------------------------------------------------- */
+
+double CellAccel::modulus(double fluid, double gt, double area0, double area)
+{
+  if (!(gt > 0.0 && area0 > 0.0)) return fluid;
+  const double r0 = sqrt(area0 / (4.0 * MathConst::MY_PI));
+  const double lam = sqrt(area / area0);
+  // eps = V dP/dV = (2 G t0 / 3 R0)(7 lam^-7 - lam^-1) of the thin Neo-Hookean sphere (§6)
+  const double wall = std::max(0.0, 2.0 * gt / (3.0 * r0) * (7.0 * pow(lam, -7.0) - 1.0 / lam));
+  // in series with the fluid: 1/eps = 1/eps_wall + 1/(K + P)
+  return wall * fluid / (wall + fluid);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -187,10 +218,13 @@ void CellAccel::adapt(bigint open, const std::vector<const double *> &probes, bo
 {
   double factor = cells ? 2.0 : 1.0;
   bool none = true;
-  double largest = 0.0, largest_se = 0.0;
+  double largest = 0.0, largest_se = 0.0, flux = 0.0, all_flux;
+  // the largest |dM/dt| of the cells' last open transfer
+  for (const double *p : probes) flux = std::max(flux, fabs(p[RATE]));
+  MPI_Allreduce(&flux, &all_flux, 1, MPI_DOUBLE, MPI_MAX, world);
   for (const double *p : probes) {
     double e, se, f = 1.0;
-    if (lag(p, open, e, se)) {
+    if (lag(p, open, all_flux, e, se)) {
       if (e - 2.0 * se > tol)
         f = std::max(0.5, tol / e);
       else if (e + 2.0 * se < tol)
@@ -219,6 +253,82 @@ void CellAccel::adapt(bigint open, const std::vector<const double *> &probes, bo
     }
   value = std::min(hi, std::max(lo, value * factor));
   open_samples = sealed_samples = 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CellAccel::after(const Cycle &at, bool limit, bool transfer, const Home &home, double step,
+                      bool cells)
+{
+  if (!automatic) {
+    if (transfer) this->limit({}, {}, step, true);
+    return;
+  }
+  if (at.sample)
+    for (size_t h = 0; h < home.probe.size(); h++)
+      sample(home.probe[h], at, home.turgor[h], home.rate[h], home.conductance[h]);
+  if (transfer && at.position == at.every + at.hold - 1)
+    adapt(at.every, std::vector<const double *>(home.probe.begin(), home.probe.end()), cells);
+  if (limit) this->limit(home.mass, home.rate, step, transfer);
+}
+
+/* ----------------------------------------------------------------------
+   the ceiling of accel for the next transfers (doc/model.md §5.12): each cell's water changes by
+   at most 'change' of itself per transfer, and in the last half of its allowance (1.5 x the
+   shortest longest edge since the start; pair cell/sph stops a run at 1.5 x the longest at the
+   run's start) the longest wall edge grows by at most 'change' x the room left: at most halved
+   per transfer; never below 'min'
+------------------------------------------------------------------------- */
+
+void CellAccel::limit(const std::vector<double> &mass, const std::vector<double> &rate, double step,
+                      bool transfer)
+{
+  double ceiling = HUGE_VAL, all;
+  // |dM|/M = a N dt |dM/dt| / M <= change
+  for (size_t h = 0; h < mass.size(); h++)
+    if (rate[h] != 0.0) ceiling = std::min(ceiling, change * mass[h] / (step * fabs(rate[h])));
+  MPI_Allreduce(&ceiling, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  double a = std::min(value, all);
+  const double l = transfer ? longest_edge() : 0.0;
+  if (l > 0.0) {
+    least = least > 0.0 ? std::min(least, l) : l;
+    // room in [0, 1]: 1 at the shortest, 0 at the allowance
+    const double room = std::min(1.0, std::max(0.0, (ALLOWANCE - l / least) / (ALLOWANCE - 1.0)));
+    // growth per transfer, a running mean over SMOOTH transfers (the wall's ringing averages out):
+    // g <- g + ((l - l_last)/l_last - g)/SMOOTH; in the last ZONE of the allowance, above
+    // change x room: a x max(1/2, allowed/g)
+    if (last > 0.0) growth += ((l - last) / last - growth) / SMOOTH;
+    if (room < ZONE && growth > change * room)
+      a = std::min(a, value * std::max(0.5, change * room / growth));
+    last = l;
+    edge = l / least;
+  }
+  // a fixed accel: the edges are only measured (output)
+  if (automatic) value = std::max(lo, std::min(hi, a));
+}
+
+/* ----------------------------------------------------------------------
+   the longest wall edge: of each owned atom's angles (wall triangles), the edges from it to the
+   angle's first and third atoms, as pair cell/sph's guard measures them; 0 without any
+------------------------------------------------------------------------- */
+
+double CellAccel::longest_edge() const
+{
+  double longest = 0.0, all;
+  if (atom->num_angle) {
+    double **x = atom->x;
+    for (int i = 0; i < atom->nlocal; i++)
+      for (int m = 0; m < atom->num_angle[i]; m++)
+        for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
+          const int k = atom->map(tag);
+          const int v = k < 0 ? -1 : domain->closest_image(i, k);
+          if (v < 0 || v == i) continue;
+          const double dx = x[v][0] - x[i][0], dy = x[v][1] - x[i][1], dz = x[v][2] - x[i][2];
+          longest = std::max(longest, dx * dx + dy * dy + dz * dz);
+        }
+  }
+  MPI_Allreduce(&longest, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return sqrt(all);
 }
 
 /* ---------------------------------------------------------------------- */

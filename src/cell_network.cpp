@@ -212,6 +212,16 @@ void CellNetwork::rates(std::vector<double> &rate) const
 
 /* ---------------------------------------------------------------------- */
 
+void CellNetwork::conductances(std::vector<double> &g) const
+{
+  g.assign(nown, 0.0);
+  // L_ii = sum_j g_ij, the diagonal of the graph Laplacian (doc/model.md §5.13)
+  for (int c = 0; c < nown; c++)
+    for (int k = start[c]; k < start[c + 1]; k++) g[c] += scale * cond[k];
+}
+
+/* ---------------------------------------------------------------------- */
+
 double CellNetwork::stiffness(double dtw) const
 {
   double most = 0.0, all;

@@ -99,6 +99,8 @@ class CellNetwork {
   void set_cells(const Cells &cells);
   // water flowing into each cell of this rank from its neighbours at the current psi (kg/s)
   void rates(std::vector<double> &rate) const;
+  // each cell's conductance to its neighbours, the sum of its junctions' g (kg Pa^-1 s^-1)
+  void conductances(std::vector<double> &g) const;
   // largest dt_w g_ij (s_i + s_j) over all junctions: the two-cell stiffness (an explicit step is
   // unstable above 2). Collective
   double stiffness(double dtw) const;

@@ -37,10 +37,10 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-// 6: + the water and time of the transfer waiting to be applied (per atom: its mass change); 5: + water
-// exchanged between cells; 4: + accel auto state; 3: + solids per cell; 2: begins with
-// -version; 1: none
-static const int RESTART_VERSION = 6;
+// 7: + the wall edges of accel; 6: + the water and time of the transfer waiting to be applied (per
+// atom: its mass change); 5: + water exchanged between cells; 4: + accel auto state; 3: + solids
+// per cell; 2: begins with -version; 1: none
+static const int RESTART_VERSION = 7;
 
 // the largest conductance L_P or L_cc (m s^-1 Pa^-1) and activation energy Ea (J/mol) accepted, far
 // above any membrane's (doc/fix_cell_turgor.md); the messages give them as 1e3 and 1e6
@@ -48,10 +48,10 @@ static const int RESTART_VERSION = 6;
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
 // between cells (5), water and physical time of the waiting transfer, the step of the last
-// transfer's evaluation (6)
+// transfer's evaluation (6), the shortest and the last longest wall edge, its growth (7)
 static int restart_globals(int version)
 {
-  return version >= 6 ? 11 : version >= 5 ? 8 : (version >= 4 ? 7 : 2);
+  return version >= 7 ? 14 : version >= 6 ? 11 : version >= 5 ? 8 : (version >= 4 ? 7 : 2);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -185,9 +185,6 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
                "cell's water)");
-  if (exchanging && accel.automatic)
-    error->all(FLERR,
-               "Fix cell/turgor: exchange does not work with accel auto: give accel a number");
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
   cells->set_turgor(measure);
@@ -199,7 +196,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = 18;
+  size_vector = 19;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -404,8 +401,8 @@ void FixCellTurgor::evaluate(bool transfer)
   drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
   physical_time = start;
 
-  // the turgor that drives each home cell's flux, the cell checked and its M0 and S set
-  std::vector<double> turgors(home.size());
+  // each home cell's flux turgor and conductance, the cell checked and its M0 and S set
+  std::vector<double> turgors(home.size()), conductances(home.size());
   for (int h = 0; h < (int) home.size(); h++) {
     const int c = home[h];
     const tagint id = cells->id(c);
@@ -490,9 +487,13 @@ void FixCellTurgor::evaluate(bool transfer)
     max_stiffness = std::max(max_stiffness, z);
     if (drive.kind != CellDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
     if (accel.pending)
-      first_accel =
-          std::min(first_accel, accel.first(conductance, slope, modulus(c), mass, offset_time()));
-    if (cycle.sample) accel.sample(s.probe, cycle, turgor, rate, conductance);
+      first_accel = std::min(first_accel,
+                             accel.first(conductance, slope,
+                                         CellAccel::modulus(kfluid + cells->sph_turgor(c),
+                                                            gt0.empty() ? 0.0 : cells->mean_gt0(c),
+                                                            cells->ref_area(c), cells->area(c)),
+                                         mass, offset_time()));
+    conductances[h] = conductance;
     if (junctions) {
       // advanced with the network below (doc/model.md §5.13), which needs psi to rise with M
       if (!(stiffness > 0.0)) {
@@ -546,6 +547,7 @@ void FixCellTurgor::evaluate(bool transfer)
     // the mean vapour flux over the exposed area, sum f A J / sum f A
     exposed_flux = exposed_area > 0.0 ? all_air[0] / exposed_area : 0.0;
   }
+  const bool starting = accel.pending;
   if (accel.pending) max_stiffness *= accel.begin(first_accel);
   if (junctions) {
     // the network on the home ranks: each solves its home cells' rows (doc/model.md §5.2)
@@ -565,6 +567,7 @@ void FixCellTurgor::evaluate(bool transfer)
     }
     if (transfer) cells->registry().settle(failure.cell, failure.message, {});
   }
+  control(cycle, transfer || starting, transfer, turgors, conductances);
   if (!transfer) return;
 
   // dM/M of each cell from its home rank to its fluid atoms, applied before the next step's forces
@@ -583,11 +586,29 @@ void FixCellTurgor::evaluate(bool transfer)
   moved_pending = all_moved;
   time_pending = dtw;
   evaluated = update->ntimestep;
-  if (accel.automatic && cycle.position == cycle.every + cycle.hold - 1) {
-    std::vector<const double *> probes;
-    for (int c : home) probes.push_back(state[cells->id(c)].probe);
-    accel.adapt(cycle.every, probes, cells->ncell() > 0);
+}
+
+/* ----------------------------------------------------------------------
+   accel after an evaluation (doc/model.md §5.12): the home cells' probes, turgor, water, rate
+   and conductance (with the exchange's) for accel auto; the wall edges measured
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::control(const CellAccel::Cycle &cycle, bool limit, bool transfer,
+                            const std::vector<double> &turgors,
+                            const std::vector<double> &conductances)
+{
+  const std::vector<int> &home = cells->home_cells();
+  CellAccel::Home in{{}, turgors, {}, {}, conductances};
+  std::vector<double> between;
+  if (junctions) network->conductances(between);
+  for (int h = 0; h < (int) home.size() && accel.automatic; h++) {
+    CellTurgorState::Cell &s = state[cells->id(home[h])];
+    in.probe.push_back(s.probe);
+    in.mass.push_back(cells->mass(home[h]));
+    in.rate.push_back(s.rate);
+    if (junctions) in.conductance[h] += between[h];
   }
+  accel.after(cycle, limit, transfer, in, every * update->dt, cells->ncell() > 0);
 }
 
 /* ----------------------------------------------------------------------
@@ -633,27 +654,6 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
   for (int h = 0; h < (int) home.size(); h++) dmass[h] = change.own[h] + change.exchange[h];
   exchange_net = change.net;
   water_exchanged += change.gross;
-}
-
-/* ----------------------------------------------------------------------
-   the cell's elastic modulus eps = V dP/dV: the fluid's K + P_SPH, in series with the thin
-   Neo-Hookean wall when the bond style gives G t0 (doc/model.md §6, §9.3)
-------------------------------------------------------------------------- */
-
-double FixCellTurgor::modulus(int c) const
-{
-  const double fluid = kfluid + cells->sph_turgor(c);
-  double eps = fluid;
-  const double gt = cells->mean_gt0(c), area0 = cells->ref_area(c);
-  if (!gt0.empty() && gt > 0.0 && area0 > 0.0) {
-    const double r0 = sqrt(area0 / (4.0 * MY_PI));
-    const double lam = sqrt(cells->area(c) / area0);
-    // eps = V dP/dV = (2 G t0 / 3 R0)(7 lam^-7 - lam^-1) of the thin Neo-Hookean sphere (§6)
-    const double wall = std::max(0.0, 2.0 * gt / (3.0 * r0) * (7.0 * pow(lam, -7.0) - 1.0 / lam));
-    // in series with the fluid: 1/eps = 1/eps_wall + 1/(K + P)
-    eps = wall * fluid / (wall + fluid);
-  }
-  return eps;
 }
 
 /* ----------------------------------------------------------------------
@@ -780,7 +780,8 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
    0 to round-off), 13 max dt_w g_ij (s_i + s_j) over junctions, 14 the most cells one rank
    summed at the last evaluation, 15 the surface temperature of the air drive (K), 16 the mean
    vapour flux over the exposed area (kg m^-2 s^-1), 17 the exposed area (m^2), 18 junctions
-   between cells of different home ranks
+   between cells of different home ranks, 19 the longest wall edge over the shortest longest one
+   since the start (0 before the first transfer)
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
@@ -791,7 +792,8 @@ double FixCellTurgor::compute_vector(int n)
       drive.mass_transfer, accel.value,     accel.lag_estimate,
       accel.lag_error,     water_exchanged, exchange_net,
       exchange_stiffness,  busiest,         drive.kind == CellDrive::AIR ? drive.temperature : 0.0,
-      exposed_flux,        exposed_area,    (double) crossing};
+      exposed_flux,        exposed_area,    (double) crossing,
+      accel.edge};
   return values[n];
 }
 
@@ -813,10 +815,6 @@ int FixCellTurgor::modify_param(int narg, char **arg)
     const int used = 1 + accel.parse(narg - 1, &arg[1], "Fix_modify cell/turgor");
     if (accel.automatic && drive.kind == CellDrive::CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
-    if (accel.automatic && junctions)
-      error->all(FLERR,
-                 "Fix_modify cell/turgor: exchange does not work with accel auto: give accel a "
-                 "number");
     // a transfer evaluated again at setup (setup) keeps the new accel
     accel_saved = accel.save();
     return used;
@@ -846,6 +844,7 @@ void FixCellTurgor::write_restart(FILE *fp)
   list.push_back(moved_pending);
   list.push_back(time_pending);
   list.push_back((double) evaluated);
+  accel.write_edges(list);
   list.insert(list.end(), cellstate.begin(), cellstate.end());
   const int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -873,6 +872,7 @@ void FixCellTurgor::restart(char *buf)
   const bool adapted = version >= 4 && accel.read(&list[3]);
   if (version >= 5) water_exchanged = list[8];
   if (version >= 6) moved_pending = list[9], time_pending = list[10], evaluated = (bigint) list[11];
+  if (version >= 7) accel.read_edges(&list[12]);
   state.clear();
   bool other_pi0 = false, other_solids = false;
   const int nvalues = CellTurgorState::restart_values(version);

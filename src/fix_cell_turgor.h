@@ -118,11 +118,12 @@ class FixCellTurgor : public Fix {
   bool network_stale = true;    // the network's junctions to set up again (new home ranks)
 
   void evaluate(bool transfer);
+  void control(const CellAccel::Cycle &cycle, bool limit, bool transfer,
+               const std::vector<double> &turgors, const std::vector<double> &conductances);
   void apply_pending();
   void transfer();
   void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
                 std::vector<double> &dmass);
-  double modulus(int c) const;
   void check_lp(double value, const std::string &who) const;
   void check_lcc(double value, const std::string &when) const;
   double offset_time() const;
