@@ -105,10 +105,11 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
   reinitflag = 0;
   comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
   comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load or grad C
-  // compute pair: the wall boundary's interval between exact evaluations and its last jump
-  nextra = 2;
+  // compute pair: the wall boundary's interval between exact evaluations and its last jump, and
+  // the background pressure P_b in use
+  nextra = 3;
   pvector = new double[nextra];
-  pvector[0] = pvector[1] = 0.0;
+  pvector[0] = pvector[1] = pvector[2] = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -196,6 +197,7 @@ void PairCellSPH::compute(int eflag, int vflag)
   pvector[0] = reports ? every : 0.0;
   pvector[1] = reports ? lastjump : 0.0;
   apply_eos();
+  pvector[2] = comm->me == 0 ? background : 0.0;
   commode = COMM_DENSITY;
   CellCompat::forward_comm(comm, this);
 
@@ -1276,13 +1278,16 @@ void PairCellSPH::apply_eos()
     MPI_Allreduce(volume, sum, 2, MPI_DOUBLE, MPI_SUM, world);
     const double target = background_min - (sum[0] > 0.0 ? sum[1] / sum[0] : 0.0);
     // P_b relaxes to it over the lag time, a step at a time (eq. B4), from the target at the
-    // style's first evaluation; a run's setup keeps it, so that a run split in two continues as one
+    // first evaluation; a run's setup keeps a P_b that steps have advanced, so that a run split in
+    // two continues as one, and takes the target again while no step has (e.g. after a 'run 0' and
+    // a change of the masses)
     const double lag = AUTO_LAG * update->dt;
-    if (!background_set || lag == 0.0)
+    if (background_set != BACKGROUND_STEPPED)
       background = target;
     else if (!update->setupflag)
       background += std::min(1.0, update->dt / lag) * (target - background);
-    background_set = 1;
+    background_set = update->setupflag && background_set != BACKGROUND_STEPPED ? BACKGROUND_SETUP
+                                                                               : BACKGROUND_STEPPED;
   }
   if (background == 0.0) return;
   for (int ii = 0; ii < inum; ii++) {
@@ -2049,6 +2054,8 @@ void PairCellSPH::read_restart_settings(FILE *fp)
                "Pair cell/sph: the restart file (format version {}) uses '{}', which was removed "
                "(doc/pair_cell_sph.md, removed keywords): continue it with an older cellsph",
                restart_version, gone);
+  // version 11: a P_b it has is one that steps have advanced
+  if (restart_version == 11 && background_set) background_set = BACKGROUND_STEPPED;
   background = background_auto && background_set ? pb : background_in.value;
   for (std::string *str : {&name, &bname}) {
     int n = static_cast<int>(str->size());

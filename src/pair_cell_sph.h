@@ -68,9 +68,11 @@ class PairCellSPH : public Pair {
   // feels P alone (doc/pair_cell_sph.md, background pressure)
   CellQuantity background_in;    // P_b (Pa): a number or an equal-style variable
   double background;             // P_b of this step (Pa), 0 = off
-  int background_set;            // auto: P_b has a value (from the style's first evaluation on)
-  int background_auto;           // background auto P_min: P_b relaxes to P_min - the fluid's mean P
-  double background_min;         // P_min (Pa)
+  // auto: P_b has no value yet (0), one from a setup with no step since, or one steps advanced
+  enum { BACKGROUND_NONE, BACKGROUND_SETUP, BACKGROUND_STEPPED };
+  int background_set;
+  int background_auto;      // background auto P_min: P_b relaxes to P_min - the fluid's mean P
+  double background_min;    // P_min (Pa)
   int parse_background(int, char **);
   void update_background();
   template <int EVFLAG> void outside_pressure();
