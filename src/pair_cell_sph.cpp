@@ -41,7 +41,7 @@ using namespace LAMMPS_NS;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
 // wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag;
 // 11: background auto's P_b now; 12: without the removed eos, Tref, shift, tensile, adhesion W,
-// grow and lag (read_old_settings reads them from older files)
+// grow and lag (read_settings reads them from older files)
 static const int RESTART_VERSION = 12;
 // the temperature (K) of the pair_coeff viscosity mu: 25 C
 static const double TREF = 298.15;
@@ -104,7 +104,7 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
   writedata = 1;
   reinitflag = 0;
   comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
-  comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load or grad C
+  comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load
   // compute pair: the wall boundary's interval between exact evaluations and its last jump, and
   // the background pressure P_b in use
   nextra = 3;
@@ -777,8 +777,8 @@ template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const Pair
    at reneighbouring: the neighbour list split into the fluid pairs of the SPH sums and the
    fluid-wall pairs of the wall boundary (same cell), so that the steps between exact evaluations
    of the boundary do not visit the boundary pairs. With per-atom h the fluid pairs are only those
-   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches grow x
-   the largest h of the run's start (grow), most of it beyond every support once a cell has dried
+   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches GROW x
+   the largest h of the run's start, most of it beyond every support once a cell has dried
    (margin = skin at a build; 2 skin on a later split, since both atoms may have moved skin/2 from
    the build positions before and move as much again after). Dropped pairs would be skipped by
    the density pass anyway, so the sums are the same.

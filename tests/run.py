@@ -25,6 +25,7 @@ is used when set. `run.py --selftest` checks the harness itself on six tiny inpu
 import os
 import pty
 import re
+import select
 import shutil
 import signal
 import subprocess
