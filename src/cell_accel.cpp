@@ -257,11 +257,11 @@ void CellAccel::adapt(bigint open, const std::vector<const double *> &probes, bo
 
 /* ---------------------------------------------------------------------- */
 
-void CellAccel::after(const Cycle &at, bool limit, bool transfer, const Home &home, double step,
+void CellAccel::after(const Cycle &at, bool bound, bool transfer, const Home &home, double step,
                       bool cells)
 {
   if (!automatic) {
-    if (transfer) this->limit({}, {}, step, true);
+    if (transfer) limit({}, {}, step, true);
     return;
   }
   if (at.sample)
@@ -269,11 +269,11 @@ void CellAccel::after(const Cycle &at, bool limit, bool transfer, const Home &ho
       sample(home.probe[h], at, home.turgor[h], home.rate[h], home.conductance[h]);
   if (transfer && at.position == at.every + at.hold - 1)
     adapt(at.every, std::vector<const double *>(home.probe.begin(), home.probe.end()), cells);
-  if (limit) this->limit(home.mass, home.rate, step, transfer);
+  if (bound) limit(home.mass, home.rate, step, transfer);
 }
 
 /* ----------------------------------------------------------------------
-   the ceiling of accel for the next transfers (doc/model.md §5.12): each cell's water changes by
+   the ceiling of accel for the next transfers (doc/fix_cell_turgor.md, Safe bridging): each cell's water changes by
    at most 'change' of itself per transfer, and in the last half of its allowance (1.5 x the
    shortest longest edge since the start; pair cell/sph stops a run at 1.5 x the longest at the
    run's start) the longest wall edge grows by at most 'change' x the room left: at most halved

@@ -74,8 +74,8 @@ class CellAccel : protected Pointers {
     std::vector<double> turgor, mass, rate, conductance;
   };
   // after an evaluation: accel auto's samples, its adaptation at the end of a cycle (cells: there
-  // are any) and, with limit, the ceiling (below); a fixed accel: the wall edges measured
-  void after(const Cycle &at, bool limit, bool transfer, const Home &home, double step, bool cells);
+  // are any) and, with bound, the ceiling (below); a fixed accel: the wall edges measured
+  void after(const Cycle &at, bool bound, bool transfer, const Home &home, double step, bool cells);
   // after a transfer's evaluation (transfer; a run's setup only sets the first accel): the
   // longest wall edge measured, and for accel auto the ceiling of the next transfers from each
   // home cell's fluid mass and rate (with the exchange) and the edge; step = N dt
