@@ -144,7 +144,7 @@ def wall_time(tag):
 
 
 def main(tags):
-    print("drying of one turgid apple cell in air, RH 0.15 (in.drying); values relative to the turgid cell")
+    print("drying of one turgid apple cell in air (in.drying); values relative to the turgid cell")
     print("section: plane z through the volume centroid (compute cell/shape); sections x, y, z; and the "
           "mean of 13 planes (tools/section_planes.lmp) +- its standard error")
     for tag in tags:
@@ -153,7 +153,9 @@ def main(tags):
         tlp = next((r for r in rs if r["PT"] <= 0.0), None)
         inter = first_line(f"intersections_{tag}.txt")
         acct = max(abs(r["moved"] - r["dMfluid"]) for r in rs) / abs(rs[-1]["dMfluid"] or 1)
-        print(f"\n{tag}: X/X0 = {end['X']:.3f} after {end['t'] / 60:.1f} min of physical time "
+        with open(f"dry_{tag}.dat") as f:
+            print(f"\n{tag}: {f.readline().lstrip('# ').strip()}")
+        print(f"  X/X0 = {end['X']:.3f} after {end['t'] / 60:.1f} min of physical time "
               f"(X = {end['X_db']:.3f} kg/kg); wall-clock {wall_time(tag)} s")
         if tlp:
             print(f"  turgor loss point (P_T <= 0): X/X0 = {tlp['X']:.3f} at {tlp['t'] / 60:.1f} min")

@@ -63,11 +63,15 @@ for run in "${runs[@]}"; do
 done
 
 python3 "$here/analyse.py" T70 T40 >summary.txt
+# the air that ran, from the runs' own headers ("# drying at T = 343.15 K, RH 0.15, h_m 0.02 m/s on
+# 0.01 of the wall, ...")
+air=$(sed -n '1s/^# drying at T = [^,]*, \(RH [^,]*\), h_m \([^ ]*\) m\/s on \([^ ]*\) of the wall.*/\1, h_m \2 m\/s on \3 of the wall/p' dry_T70.dat)
 
-gnuplot <<'GP'
+# the plots (the title's AIRTEXT: the air above)
+sed "s|AIRTEXT|${air:-air not recorded}|" <<'GP' | gnuplot
 set terminal pngcairo size 1400,600 noenhanced font ",11"
 set output 'fig_drying_curve.png'
-set multiplot layout 1,2 title "Drying of one apple cell in air (RH 0.15, h_m 2 cm/s on 1 % of the wall)"
+set multiplot layout 1,2 title "Drying of one apple cell in air (AIRTEXT)"
 set grid
 set xlabel 'physical time (min)'
 set ylabel 'X / X0'

@@ -15,6 +15,7 @@ and the data files plotted (gnuplot): curve.dat, profile_K.dat, shrink_L.dat, cu
   python3 analyse.py FOLDER
 """
 import os
+import re
 import subprocess
 import sys
 
@@ -46,6 +47,10 @@ def dump(path):
 def main(folder):
     os.chdir(folder)
     slab = [[float(v) for v in line.split()] for line in open("slab.dat") if not line.startswith("#")]
+    # the air that ran (in.tissue's first line of slab.dat: "# air: T = 333.15 K, RH 0.1, h_m 0.02 m/s")
+    air = re.search(r"T = (\S+) K, RH (\S+), h_m (\S+) m/s", open("slab.dat").readline())
+    air_text = (f"{float(air.group(1)) - 273.15:.0f} C, RH {air.group(2)}, h_m {air.group(3)} m/s"
+                if air else "air not recorded")
     cells = blocks("cells.dat")       # mass, volume, X/X0, turgor, X, section area, wall area
     centres = blocks("centres.dat")   # centre z of the wall atoms
     steps = sorted(set(cells) & set(centres))
@@ -132,7 +137,7 @@ def main(folder):
 set grid
 set output 'drying_curve.png'
 set xlabel 'physical time (s)'; set ylabel 'slab X/X0'
-set title 'Drying curve: 60 C, RH 0.1, h_m 2 cm/s, top face'
+set title 'Drying curve: {air_text}, top face'
 plot 'curve.dat' using 1:2 with linespoints lw 2 pt 7 notitle
 set output 'profile.png'
 set xlabel 'depth of the cell centre below the top face (um)'; set ylabel 'cell X/X0'
