@@ -126,8 +126,8 @@ def draw(pieces, dots, opts, out):
         x0, y0 = (lo_u - 0.5 * pad) * um, (lo_v - 0.5 * pad) * um
         label = f"{bar * um:g} µm"
         script = [
-            "set terminal pngcairo size 900,800 font 'Sans,12'", f"set output '{out}'",
-            "set size ratio -1", "unset key", "unset tics", "unset border",
+            "set terminal pngcairo size 900,800 noenhanced font 'Sans,12'", f"set output '{out}'",
+            "set size ratio -1", "unset key", "unset tics", "set cbtics", "unset border",
             f"set xrange [{(lo_u - pad) * um}:{(hi_u + pad) * um}]",
             f"set yrange [{(lo_v - pad) * um}:{(hi_v + pad) * um}]",
             f"set title \"{opts.get('title', '')}\"",

@@ -91,30 +91,23 @@ def stability(tag, reach, rs):
 
 
 def cuts(tag, rs, tlp):
-    """cut_TAG_NAME.dat for the pictures (run.sh): x y of the wall atoms (block 0) and fluid atoms
-    (block 1) within 8 um of the plane z through the wall's centre, at the snapshots fresh (the
-    first), tlp (the turgor loss point), half (X/X0 <= 0.5) and dry (the last)"""
-    want = {"fresh": rs[0]["t"], "half": next((r["t"] for r in rs if r["X"] <= 0.5), None),
-            "dry": rs[-1]["t"]}
+    """cut_TAG_NAME.step for the pictures (run.sh, tools/cut_picture.py): the step, time (min) and
+    X/X0 of the snapshots fresh (the first), tlp (the turgor loss point), half (X/X0 <= 0.5) and
+    dry (the last)"""
+    want = {"fresh": rs[0], "half": next((r for r in rs if r["X"] <= 0.5), None), "dry": rs[-1]}
     if tlp:
-        want["tlp"] = tlp["t"]
+        want["tlp"] = tlp
     with open(f"dry_{tag}.dat") as f:
         head = f.readline()
     tstep = float(re.search(r"accel (\S+),", head).group(1)) * float(re.search(r"dt (\S+),", head).group(1))
     first = None
-    for (step, wc, wr), (_, fc, fr) in zip(snapshots(f"wall_{tag}.dump"), snapshots(f"fluid_{tag}.dump")):
+    for step, _, _ in snapshots(f"wall_{tag}.dump"):
         first = step if first is None else first
         t = (step - first) * tstep
-        names = [n for n, tn in want.items() if tn is not None and abs(t - tn) <= 1e-6 * tstep + 1e-9 * tn]
-        if not names:
-            continue
-        wall, fluid = positions(wc, wr), positions(fc, fr)
-        zc = statistics.mean(p[2] for p in wall.values())
-        for name in names:
-            with open(f"cut_{tag}_{name}.dat", "w") as f:
-                for block in (wall, fluid):
-                    f.writelines(f"{p[0]:.9e} {p[1]:.9e}\n" for p in block.values() if abs(p[2] - zc) < 8e-6)
-                    f.write("\n\n")
+        for name, r in want.items():
+            if r is not None and abs(t - r["t"]) <= 1e-6 * tstep + 1e-9 * r["t"]:
+                with open(f"cut_{tag}_{name}.step", "w") as f:
+                    f.write(f"{step} {r['t'] / 60:.1f} {r['X']:.3f}\n")
 
 
 def reach_of(tag):

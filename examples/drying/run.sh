@@ -21,7 +21,7 @@ elong=${ELONG:-}    # ELONG=1.45: start from a prolate cell of that elongation (
 out=$here/out
 mkdir -p "$out"
 cd "$out"
-rm -f dry_*.dat final_*.txt wall_*.dump fluid_*.dump pic_*.png cut_*.dat fig_*.png summary.txt \
+rm -f dry_*.dat final_*.txt wall_*.dump fluid_*.dump pic_*.png cut_*.dat cut_*.step fig_*.png summary.txt \
   intersections_*.txt sections_*.dat planes_*.txt
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
 if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
@@ -128,13 +128,17 @@ plot 'stability_T70.txt' using 2:5 with lines lw 2 title 'share of fluid atoms w
      'stability_T40.txt' using 2:5 with lines dt 2 title 'within dx/2, 40 C', 'stability_T40.txt' using 2:6 with lines dt 2 title 'held, 40 C'
 unset multiplot
 GP
-# the pictures: the atoms within 8 um of the plane z through the cell's centre (analyse.py's
-# cut_TAG_NAME.dat), seen from +z as a micrograph of a section: wall green, fluid blue
-for cut in cut_*.dat; do
-  name=${cut#cut_}
-  gnuplot -e "set terminal pngcairo size 700,700; set output 'pic_${name%.dat}.png'; set size ratio -1; \
-    unset key; unset border; unset tics; plot '$cut' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb 'forest-green', \
-    '' index 1 using 1:2 with points pt 7 ps 0.6 lc rgb 'royalblue'"
+# the pictures (tools/cut_picture.py): the section through the wall's centre by the plane z as a
+# micrograph, the wall's outline and the sap within 8 um coloured by its SPH pressure, a scale bar,
+# the time and X/X0 (the snapshots that analyse.py chose: cut_TAG_NAME.step)
+for pick in cut_*.step; do
+  name=${pick#cut_}; name=${name%.step}; tag=${name%_*}
+  read -r step minutes x <"$pick"
+  t_c=$(sed -n '1s/^# drying at T = \([0-9.]*\) K.*/\1/p' "dry_$tag.dat")
+  python3 "$here/../../tools/cut_picture.py" cell.data "wall_$tag.dump" --fluid "fluid_$tag.dump" \
+    --color d_pressure --cscale 1e-3 --clabel "SPH pressure (kPa)" --step "$step" \
+    --title "$(awk -v t="$t_c" 'BEGIN { printf "%.0f C", t - 273.15 }'), ${air:-}: t = $minutes min, X/X0 = $x" \
+    --out "pic_$name.png"
 done
 stamp "done; outputs in $out"
 cat summary.txt
