@@ -17,8 +17,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from lammps_dump import positions, snapshots    # noqa: E402
-from wall_self_intersection import read_triangles    # noqa: E402
+from lammps_dump import positions, read_triangles, snapshots    # noqa: E402
 
 
 def sub(a, b):

@@ -1,6 +1,9 @@
-"""Reading LAMMPS text dumps (dump custom): one reader for tools/, bench/ and the examples' analyses.
+"""Reading LAMMPS text dumps (dump custom) and the wall of data files: one reader for tools/, bench/
+and the examples' analyses.
   snapshots(path)        -> (step, columns, rows) of each snapshot
   positions(cols, rows)  -> {id: (x, y, z)} of one snapshot (x y z, or the unwrapped xu yu zu)
+  read_triangles(path)   -> the wall triangles (a, b, c) of a data file's Angles section
+  molecules(path)        -> {atom id: molecule id} of a data file's Atoms section (the cell)
 Scripts outside tools/ put this folder on sys.path first:
   sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))"""
 
@@ -32,3 +35,32 @@ def positions(cols, rows, path="the dump"):
     except ValueError:
         raise SystemExit(f"{path} needs columns id x y z (or xu yu zu), not: {' '.join(cols)}")
     return {int(r[ci]): tuple(float(r[c]) for c in cx) for r in rows}
+
+
+def data_section(path, name):
+    """the rows (lists of words, comments dropped) of section NAME of a LAMMPS data file"""
+    rows, inside = [], False
+    with open(path) as f:
+        for line in f:
+            words = line.split("#")[0].split()
+            if not words:
+                continue
+            if len(words) == 1 and words[0][0].isalpha():
+                inside = words[0] == name
+            elif inside:
+                rows.append(words)
+    return rows
+
+
+def read_triangles(path):
+    """the wall triangles (a, b, c) of the Angles section of a LAMMPS data file"""
+    tris = [(int(r[2]), int(r[3]), int(r[4])) for r in data_section(path, "Angles")]
+    if not tris:
+        raise SystemExit(f"{path} has no Angles section (wall triangles)")
+    return tris
+
+
+def molecules(path):
+    """{atom id: molecule id} of the Atoms section of a LAMMPS data file (atom_style angle or
+    molecular: id mol type x y z)"""
+    return {int(r[0]): int(r[1]) for r in data_section(path, "Atoms")}

@@ -27,29 +27,7 @@ wall that does not cross itself gives 0; a wall pushed through itself gives a po
 import math
 import sys
 
-from lammps_dump import positions, snapshots
-
-
-def read_triangles(path):
-    """the wall triangles (a, b, c) of the Angles section of a LAMMPS data file"""
-    tris = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].split("#")[0].strip() == "Angles":
-            i += 1
-            while i < len(lines) and not lines[i].strip():
-                i += 1
-            while i < len(lines) and lines[i].strip():
-                tok = lines[i].split()
-                tris.append((int(tok[2]), int(tok[3]), int(tok[4])))
-                i += 1
-            break
-        i += 1
-    if not tris:
-        raise SystemExit(f"wall_self_intersection: {path} has no Angles section (wall triangles)")
-    return tris
+from lammps_dump import positions, read_triangles, snapshots
 
 
 def sub(a, b):

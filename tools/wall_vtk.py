@@ -23,33 +23,12 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lammps_dump import positions, snapshots  # noqa: E402
-
-
-def sections(path):
-    """{section name: [rows of words]} of a LAMMPS data file (Atoms, Angles, ...)"""
-    out, name = {}, None
-    with open(path) as f:
-        for line in f:
-            words = line.split("#")[0].split()
-            if not words:
-                continue
-            if len(words) == 1 and words[0][0].isalpha():
-                name = words[0]
-                out[name] = []
-            elif name is not None:
-                out[name].append(words)
-    return out
+from lammps_dump import molecules, positions, read_triangles, snapshots  # noqa: E402
 
 
 def read_walls(path):
     """(triangles [(a, b, c)], {atom id: molecule id}) of a cellsph data file"""
-    sec = sections(path)
-    if not sec.get("Angles"):
-        raise SystemExit(f"wall_vtk: {path} has no Angles section (the wall triangles)")
-    tris = [(int(r[2]), int(r[3]), int(r[4])) for r in sec["Angles"]]
-    mol = {int(r[0]): int(r[1]) for r in sec.get("Atoms", [])}
-    return tris, mol
+    return read_triangles(path), molecules(path)
 
 
 def enclosed_volumes(name):
