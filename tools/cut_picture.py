@@ -31,7 +31,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from lammps_dump import positions, snapshots  # noqa: E402
-from wall_vtk import read_walls  # noqa: E402
+from wall_vtk import read_walls, triple  # noqa: E402
 
 AXES = {"x": (0, 1, 2), "y": (1, 2, 0), "z": (2, 0, 1)}    # normal, then the picture's u, v
 
@@ -53,9 +53,7 @@ def volume_centre(tris, pos):
     vol, first = 0.0, [0.0, 0.0, 0.0]
     for a, b, c in tris:
         pa, pb, pc = pos[a], pos[b], pos[c]
-        # signed volume of the tetrahedron (0, a, b, c): x_a . (x_b x x_c) / 6
-        v = (pa[0] * (pb[1] * pc[2] - pb[2] * pc[1]) + pa[1] * (pb[2] * pc[0] - pb[0] * pc[2]) +
-             pa[2] * (pb[0] * pc[1] - pb[1] * pc[0])) / 6.0
+        v = triple(pa, pb, pc) / 6.0    # signed volume of the tetrahedron (0, a, b, c)
         vol += v
         for k in range(3):
             first[k] += v * (pa[k] + pb[k] + pc[k]) / 4.0    # its centroid (0 + a + b + c) / 4

@@ -31,6 +31,12 @@ def read_walls(path):
     return read_triangles(path), molecules(path)
 
 
+def triple(a, b, c):
+    """a . (b x c): six times the signed volume of the tetrahedron (0, a, b, c)"""
+    return (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+            a[2] * (b[0] * c[1] - b[1] * c[0]))
+
+
 def enclosed_volumes(name):
     """{cell: volume enclosed by its triangles} of a written VTK file, read back from the file
     (divergence theorem)"""
@@ -45,10 +51,7 @@ def enclosed_volumes(name):
     cells = [int(w) for w in words[at + 1:at + 1 + m]]
     six = {}
     for (a, b, c), cell in zip(polys, cells):
-        (ax, ay, az), (bx, by, bz), (cx, cy, cz) = pts[a], pts[b], pts[c]
-        # x_a . (x_b x x_c): six times the signed volume of the tetrahedron with the origin
-        t = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx)
-        six[cell] = six.get(cell, 0.0) + t
+        six[cell] = six.get(cell, 0.0) + triple(pts[a], pts[b], pts[c])
     return {cell: abs(v) / 6.0 for cell, v in sorted(six.items())}
 
 
