@@ -6,9 +6,9 @@
 
 #include "cell_accel.h"
 
-#include "atom.h"
+#include "cell_wall_triangles.h"
+
 #include "comm.h"
-#include "domain.h"
 #include "error.h"
 #include "math_const.h"
 
@@ -289,7 +289,8 @@ void CellAccel::limit(const std::vector<double> &mass, const std::vector<double>
     if (rate[h] != 0.0) ceiling = std::min(ceiling, change * mass[h] / (step * fabs(rate[h])));
   MPI_Allreduce(&ceiling, &all, 1, MPI_DOUBLE, MPI_MIN, world);
   double a = std::min(value, all);
-  const double l = transfer ? longest_edge() : 0.0;
+  // the longest wall edge as pair cell/sph's guard measures it
+  const double l = transfer ? CellWallTriangles::longest_edge(lmp) : 0.0;
   if (l > 0.0) {
     least = least > 0.0 ? std::min(least, l) : l;
     // room in [0, 1]: 1 at the shortest, 0 at the allowance
@@ -305,30 +306,6 @@ void CellAccel::limit(const std::vector<double> &mass, const std::vector<double>
   }
   // a fixed accel: the edges are only measured (output)
   if (automatic) value = std::max(lo, std::min(hi, a));
-}
-
-/* ----------------------------------------------------------------------
-   the longest wall edge: of each owned atom's angles (wall triangles), the edges from it to the
-   angle's first and third atoms, as pair cell/sph's guard measures them; 0 without any
-------------------------------------------------------------------------- */
-
-double CellAccel::longest_edge() const
-{
-  double longest = 0.0, all;
-  if (atom->num_angle) {
-    double **x = atom->x;
-    for (int i = 0; i < atom->nlocal; i++)
-      for (int m = 0; m < atom->num_angle[i]; m++)
-        for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
-          const int k = atom->map(tag);
-          const int v = k < 0 ? -1 : domain->closest_image(i, k);
-          if (v < 0 || v == i) continue;
-          const double dx = x[v][0] - x[i][0], dy = x[v][1] - x[i][1], dz = x[v][2] - x[i][2];
-          longest = std::max(longest, dx * dx + dy * dy + dz * dz);
-        }
-  }
-  MPI_Allreduce(&longest, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return sqrt(all);
 }
 
 /* ---------------------------------------------------------------------- */

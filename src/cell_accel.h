@@ -122,7 +122,6 @@ class CellAccel : protected Pointers {
   double growth;         // the running mean of the longest edge's growth per transfer
 
   bool lag(const double *probe, bigint every, double flux, double &e, double &se) const;
-  double longest_edge() const;
 };
 
 }    // namespace LAMMPS_NS

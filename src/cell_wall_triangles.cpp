@@ -53,28 +53,31 @@ void CellWallTriangles::grow(int n)
 
 void CellWallTriangles::start_run()
 {
-  edgecap = 1.5 * longest_edge() + neighbor->skin;
+  edgecap = 1.5 * longest_edge(lmp) + neighbor->skin;
 }
 
 /* ----------------------------------------------------------------------
    longest edge b-a, b-c of the wall triangles now, over the angles of owned atoms whose other
-   atoms this rank has (all at the start; enough to measure the wall)
+   atoms this rank has (all at the start; enough to measure the wall), over all ranks; 0 without
+   any
 ------------------------------------------------------------------------- */
 
-double CellWallTriangles::longest_edge() const
+double CellWallTriangles::longest_edge(LAMMPS *lmp)
 {
+  Atom *atom = lmp->atom;
   double **x = atom->x;
   double edge = 0.0, all = 0.0;
-  for (int i = 0; i < atom->nlocal; i++)
+  // 0 where the atom style has no angles
+  for (int i = 0; atom->num_angle && i < atom->nlocal; i++)
     for (int m = 0; m < atom->num_angle[i]; m++)
       for (tagint tag : {atom->angle_atom1[i][m], atom->angle_atom3[i][m]}) {
         const int k = atom->map(tag);
         if (k < 0 || atom->angle_atom2[i][m] != atom->tag[i]) continue;
         double del[3] = {x[k][0] - x[i][0], x[k][1] - x[i][1], x[k][2] - x[i][2]};
-        domain->minimum_image(del);
+        lmp->domain->minimum_image(del);
         edge = std::max(edge, del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
       }
-  MPI_Allreduce(&edge, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&edge, &all, 1, MPI_DOUBLE, MPI_MAX, lmp->world);
   return sqrt(all);
 }
 

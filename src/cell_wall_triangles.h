@@ -56,8 +56,9 @@ class CellWallTriangles : protected Pointers {
   // next build), and the run's allowance for it
   double edge_max() const { return edgemax; }
   double edge_cap() const { return edgecap; }
-  // longest edge b-a, b-c now over the owned atoms' angles whose other atoms this rank has
-  double longest_edge() const;
+  // longest edge b-a, b-c now over the owned atoms' angles whose other atoms this rank has (all
+  // ranks; also fix cell/turgor's accel guard)
+  static double longest_edge(class LAMMPS *lmp);
   double memory_usage() const;
 
  private:
