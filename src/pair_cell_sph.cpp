@@ -43,41 +43,14 @@ using namespace LAMMPS_NS;
 // 11: background auto's P_b now; 12: without the removed eos, Tref, shift, tensile, adhesion W,
 // grow and lag (read_settings reads them from older files)
 static const int RESTART_VERSION = 12;
-// the temperature (K) of the pair_coeff viscosity mu: 25 C
-static const double TREF = 298.15;
 
 static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
-// per-atom h: the neighbour cutoff allows h up to GROW x the largest h at the run's start
-// (run_hcap; unless a cutoff is given)
-static const double GROW = 1.5;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-10;
 static const int HITER = 50;
-// h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger h,
-// so that the iterations sum over those pairs only while every h changed by less than HMARGIN
-static const double HMARGIN = 1e-3;
-// per-atom h with the wall boundary: the fluid pairs kept at a split of the list allow each h to
-// grow by HGROW before the list is split again (split_list)
-static const double HGROW = 0.05;
 // h adaptive with the wall boundary: exact evaluations of the boundary at the first step of a run
 // whose h had no value yet (h starts from the pair_coeff value)
 static const int HSTART = 4;
-
-// contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
-static const double CONTACT_H = 2.5;
-// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval) and on
-// reneighbouring, linearised in between in the displacements from a base half an interval ahead
-// (base_positions)
-static const int REFRESH = 20;
-static const int REFRESH_MAX = 320;
-// the largest jump of 1 - gamma of a fluid atom at an exact evaluation that lets the interval grow
-// (doc/pair_cell_sph.md, cost control: 1e-6 is 20 Pa of pressure at K = 20 MPa)
-static const double JUMP_TOL = 1e-6;
-// contacts: the near candidates lie within reach + NEAR x skin of the wall (wall_forces)
-static const double NEAR = 0.25;
-// background auto: the default relaxation time of P_b, in steps (doc/pair_cell_sph.md: 20 steps
-// let the seed cell's breathing grow in undamped dynamics, 200 damp it)
-static const int AUTO_LAG = 200;
 
 /* ---------------------------------------------------------------------- */
 
@@ -86,16 +59,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), background(0.0), background_set(0),
     background_auto(0), background_min(0.0), pc(nullptr), wself(nullptr), invrho0(nullptr),
     fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1),
-    hcap(nullptr), hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
-    wallload(nullptr),
-    tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
-    deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), jump(nullptr),
-    xnear(nullptr), slot(nullptr), refreshing(1), rebuilt(1), predicted(0), measuring(0),
-    every(REFRESH), pending(REFRESH), lastjump(0.0), refreshed(-1), commode(COMM_DENSITY),
-    restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
-    pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0),
-    maxpairs(0)
+    hcap(nullptr), hscale(nullptr), dsum(nullptr), boundary(nullptr), walls(0), wall(lmp, this),
+    commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0),
+    pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
+    pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -124,7 +91,6 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairdwj);
   memory->destroy(pairr);
   memory->destroy(pairmu);
-  delete tris;
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(setflag);
@@ -148,33 +114,12 @@ void PairCellSPH::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   const int peratom = hmode != HFIXED;
-  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum);
+  const bool grown = atom->nmax > nmax || (walls && !wall.deficit) || (peratom && !dsum);
   if (grown) grow_peratom();
   if (temp_set) update_viscosity();
   if (background_in.is_variable()) update_background();
 
-  if (walls) {
-    rebuilt = neighbor->ago == 0 || grown;
-    if (rebuilt) {
-      tris->build();
-      // a triangle whose centroid is within the support of f until the next build has its
-      // vertices within the support + its centroid-vertex distance + skin of f, and that
-      // distance grows by < skin (doc/pair_cell_sph.md, Restrictions)
-      tris->check_ghost_cutoff("the kernel support", wallsupport, 1, 2);
-      commode = COMM_TRIANGLES;
-      CellCompat::forward_comm(comm, this);
-    }
-    if (update->setupflag) {
-      every = pending = REFRESH;
-      lastjump = 0.0;
-    }
-    refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
-    measuring = refreshing && !rebuilt;
-    if (refreshing) {
-      refreshed = update->ntimestep;
-      every = pending;
-    }
-  }
+  if (walls) wall.start_step(grown);
   // per-atom h; h adaptive starting from the pair_coeff value: the boundary evaluated exactly at
   // the converged h again, so that its linearisation in h starts there
   int passes = 1;
@@ -184,22 +129,19 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  if (walls && rebuilt) split_list(neighbor->skin);
+  if (walls && wall.rebuilt) wall.split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
-    if (pass > 0) refreshing = 1, measuring = 0;
-    // the base ahead in dynamics only (a minimisation's velocities are not its motion)
-    if (walls && refreshing) base_positions(!rebuilt && pass == 0 && update->whichflag == 1);
+    if (walls) wall.start_pass(pass);
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
   }
   // compute pair sums pvector over ranks: the global values on rank 0, 0 elsewhere or without walls
   const int reports = walls && comm->me == 0;
-  pvector[0] = reports ? every : 0.0;
-  pvector[1] = reports ? lastjump : 0.0;
+  pvector[0] = reports ? wall.every : 0.0;
+  pvector[1] = reports ? wall.lastjump : 0.0;
   apply_eos();
   pvector[2] = comm->me == 0 ? background : 0.0;
-  commode = COMM_DENSITY;
-  CellCompat::forward_comm(comm, this);
+  forward(COMM_DENSITY);
 
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
@@ -210,7 +152,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     if (fluid[type[i]]) {
       rhoinv[i] = 1.0 / rho[i];
       prho2[i] = (pressure[i] + background) * rhoinv[i] * rhoinv[i];
-      if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
+      if (walls) prho2[i] /= std::max(1.0 - wall.deficit[i], wall.GAMMA_MIN);
       if (peratom) prho2[i] /= omega[i];
     }
 
@@ -223,14 +165,7 @@ void PairCellSPH::compute(int eflag, int vflag)
                                        {CELLSPH_FORCES(1, 0), CELLSPH_FORCES(1, 1)}};
 #undef CELLSPH_FORCES
   (this->*FORCES[viscous][evflag ? 1 : 0][peratom])();
-  if (walls) {
-    if (evflag)
-      wall_forces<1>();
-    else
-      wall_forces<0>();
-    commode = COMM_LOAD;
-    if (force->newton_pair) CellCompat::reverse_comm(comm, this);
-  }
+  if (walls) wall.forces(evflag);
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -244,7 +179,7 @@ void PairCellSPH::compute(int eflag, int vflag)
 void PairCellSPH::density_pass(int first)
 {
   // per-atom h grown beyond the split's allowance: split again (split_list)
-  if (walls && hmode != HFIXED && outgrown()) split_list(2.0 * neighbor->skin);
+  if (walls && hmode != HFIXED && wall.outgrown()) wall.split_list(2.0 * neighbor->skin);
   typedef void (PairCellSPH::*Loop)(int);
 #define CELLSPH_DENSITY(V, W, P)                                 \
   {                                                              \
@@ -275,16 +210,8 @@ void PairCellSPH::density_pass(int first)
     (this->*DENSITY[walls][viscous][hmode != HFIXED][kernel])(first);
     hdrift = 0.0;
   }
-  if (walls && first) {
-    if (refreshing) {
-      keep_base();
-      // a base ahead of the atoms: the linearised deficit at their positions now
-      if (predicted) linear_deficit();
-      if (measuring) next_interval();
-    }
-  }
-  commode = first ? COMM_DENSITY : COMM_SUMS;
-  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+  if (walls && first) wall.after_density();
+  reverse(first ? COMM_DENSITY : COMM_SUMS);
 }
 
 /* ----------------------------------------------------------------------
@@ -366,8 +293,7 @@ void PairCellSPH::solve_h()
       error->all(FLERR,
                  "Pair cell/sph: h adaptive did not converge in {} Newton iterations on step {}",
                  HITER, update->ntimestep);
-    commode = COMM_H;
-    CellCompat::forward_comm(comm, this);
+    forward(COMM_H);
     kernel_scales();
     density_pass(0);
   }
@@ -396,9 +322,9 @@ double PairCellSPH::newton_h()
     if (!fluid[type[i]]) continue;
     double gamma = 1.0, dgamma = 0.0;
     if (walls) {
-      gamma = 1.0 - deficit[i];
-      dgamma = -dhdef[i];
-      if (gamma < gamma_min) gamma = gamma_min, dgamma = 0.0;
+      gamma = 1.0 - wall.deficit[i];
+      dgamma = -wall.dhdef[i];
+      if (gamma < wall.GAMMA_MIN) gamma = wall.GAMMA_MIN, dgamma = 0.0;
     }
     const double hi = hv[i];
     const double hd = dim == 2 ? hi * hi : hi * hi * hi;
@@ -420,7 +346,7 @@ double PairCellSPH::newton_h()
     if (!fluid[type[i]]) continue;
     hv[i] += step[ii];
     // the deficit at the new h: linear in h between exact evaluations
-    if (walls) deficit[i] += dhdef[i] * step[ii];
+    if (walls) wall.deficit[i] += wall.dhdef[i] * step[ii];
     if (hv[i] > hcap[type[i]]) too_long(i);
   }
   return all;
@@ -440,27 +366,17 @@ void PairCellSPH::unsolvable(int i, double omega) const
 }
 
 /* ----------------------------------------------------------------------
-   per-atom arrays (owned and ghost) at atom->nmax: the force pass's, and the wall boundary's
+   per-atom arrays (owned and ghost) at atom->nmax: the force pass's, per-atom h's, and the wall
+   boundary's
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::destroy_peratom()
 {
   memory->destroy(prho2);
   memory->destroy(rhoinv);
-  memory->destroy(deficit);
-  memory->destroy(wallload);
-  memory->destroy(deficit0);
-  memory->destroy(xbase);
-  memory->destroy(gradsum);
-  memory->destroy(disp);
-  memory->destroy(jump);
-  memory->destroy(xnear);
-  memory->destroy(slot);
   memory->destroy(hscale);
   memory->destroy(dsum);
-  memory->destroy(dhdef);
-  memory->destroy(dhdef0);
-  memory->destroy(hbase);
+  wall.destroy();
 }
 
 void PairCellSPH::grow_peratom()
@@ -472,24 +388,8 @@ void PairCellSPH::grow_peratom()
   if (hmode != HFIXED) {
     memory->create(hscale, nmax, 4, "pair:hscale");
     memory->create(dsum, nmax, "pair:dsum");
-    if (walls) {
-      memory->create(dhdef, nmax, "pair:dhdef");
-      memory->create(dhdef0, nmax, "pair:dhdef0");
-      memory->create(hbase, nmax, "pair:hbase");
-    }
   }
-  if (!walls) return;
-  memory->create(deficit, nmax, "pair:deficit");
-  memory->create(wallload, nmax, 3, "pair:wallload");
-  tris->grow(nmax);
-  memory->create(deficit0, nmax, "pair:deficit0");
-  memory->create(xbase, nmax, 3, "pair:xbase");
-  memory->create(gradsum, nmax, 3, "pair:gradsum");
-  memory->create(disp, nmax, 3, "pair:disp");
-  memory->create(jump, nmax, "pair:jump");
-  memory->create(xnear, nmax, 3, "pair:xnear");
-  memory->create(slot, nmax, "pair:slot");
-  for (int i = 0; i < nmax; i++) slot[i] = -1;
+  if (walls) wall.grow(nmax, hmode != HFIXED);
 }
 
 /* ----------------------------------------------------------------------
@@ -537,20 +437,7 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     if (PERATOM)
       for (int i = nlocal; i < nall; i++) dsum[i] = 0.0;
   }
-  if (WALLS && first) {
-    const int nall = nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
-    if (refreshing) {
-      for (int i = 0; i < nall; i++) deficit[i] = 0.0;
-      if (PERATOM)
-        for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
-      terms.clear();
-      termlen.clear();
-      if (rebuilt) touching.clear();
-    } else {
-      linear_deficit();
-    }
-  }
+  if (WALLS && first) wall.start_sums(PERATOM);
 
   int npairs = 0;
   for (int ii = 0; ii < inum; ii++) {
@@ -561,8 +448,8 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     const double mi = rmass[i];
     const PairConst *pci = pc[type[i]];
     // with the wall boundary, the fluid pairs of the list (split_list() at reneighbouring)
-    const int *jlist = WALLS ? &fluidj[fluidfirst[ii]] : firstneigh[i];
-    const int jnum = WALLS ? fluidfirst[ii + 1] - fluidfirst[ii] : numneigh[i];
+    const int *jlist = WALLS ? &wall.fluidj[wall.fluidfirst[ii]] : firstneigh[i];
+    const int jnum = WALLS ? wall.fluidfirst[ii + 1] - wall.fluidfirst[ii] : numneigh[i];
     if (npairs + jnum > maxpairs) grow_pairs(npairs + jnum);
     int *pj = pairj;
     double *pdw = pairdw;
@@ -608,24 +495,7 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   }
   pairfirst[inum] = npairs;
 
-  // the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f,
-  // the pairs of each f in a row (split_list)
-  if (WALLS && first && refreshing) {
-    const int npair = static_cast<int>(boundarypairs.size());
-    for (int k = 0; k < npair;) {
-      const int f = boundarypairs[k][0];
-      const int start = static_cast<int>(terms.size());
-      for (; k < npair && boundarypairs[k][0] == f; k++) {
-        const int b = boundarypairs[k][1];
-        const double delx = xbase[f][0] - xbase[b][0];
-        const double dely = xbase[f][1] - xbase[b][1];
-        const double delz = xbase[f][2] - xbase[b][2];
-        const PairConst &p = pc[type[f]][type[b]];
-        if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms<PERATOM>(f, b, p);
-      }
-      for (int t = start; t < static_cast<int>(terms.size()); t++) slot[terms[t].v] = -1;
-    }
-  }
+  if (WALLS && first && wall.refreshing) wall.exact_terms(PERATOM);
 }
 
 /* ----------------------------------------------------------------------
@@ -711,506 +581,6 @@ void PairCellSPH::grow_pairs(int n)
 }
 
 /* ----------------------------------------------------------------------
-   the terms of fluid atom f with the triangles (a, b, c) kept by wall atom b of its own cell:
-   kernel deficit and its gradient, summed per vertex into terms (slot[v]: v's term of f, with
-   |x_v - x_f| in termlen), and at a neighbour build the contact candidates
-------------------------------------------------------------------------- */
-
-template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
-{
-  double **x = xbase;
-  const double *xf = x[f];
-  const double support = CellKernel::support(kernel);
-  const double touch = p.reach + neighbor->skin;
-  const double edgemax = tris->edge_max();
-  for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
-    const int a = tris->a(t), c = tris->c(t);
-    // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
-    if (a < 0 || c < 0) continue;
-    const double ra[3] = {x[a][0] - xf[0], x[a][1] - xf[1], x[a][2] - xf[2]};
-    const double rb[3] = {x[b][0] - xf[0], x[b][1] - xf[1], x[b][2] - xf[2]};
-    const double rc[3] = {x[c][0] - xf[0], x[c][1] - xf[1], x[c][2] - xf[2]};
-    const double g[3] = {(ra[0] + rb[0] + rc[0]) / 3.0, (ra[1] + rb[1] + rc[1]) / 3.0,
-                         (ra[2] + rb[2] + rc[2]) / 3.0};
-    const double gl = sqrt(CellTriangle::dot(g, g));
-    const double invh = PERATOM ? hscale[f][0] : p.scale.invh;
-    const double q = gl * invh;
-    if (q >= support) continue;
-    const int vert[3] = {a, b, c};
-    const double *rv[3] = {ra, rb, rc};
-    int s[3];
-    double len[3];
-    for (int v = 0; v < 3; v++) {
-      if (slot[vert[v]] < 0) {
-        slot[vert[v]] = static_cast<int>(terms.size());
-        terms.push_back(Term{f, vert[v], {0.0, 0.0, 0.0}});
-        termlen.push_back(sqrt(CellTriangle::dot(rv[v], rv[v])));
-      }
-      s[v] = slot[vert[v]];
-      len[v] = termlen[s[v]];
-    }
-    double ph, dph;
-    phi_beyond(q, ph, dph);
-    // D_T = Phi(|g|/h) Omega_T / (4 pi), Omega_T the solid angle of T seen from f (exact: a point
-    // formula (g . S_T)/|g|^3 would err by 1e-3 in gamma, 2 % in pressure); 1 - gamma_f = sum_T D_T
-    double solid, dom[3][3];
-    CellTriangle::solid_angle(ra, rb, rc, len, solid, dom);
-    deficit[f] += ph * solid / (4.0 * M_PI);
-    // per-atom h: dD_T/dh = -Phi'(q) q Omega_T / (4 pi h)
-    if (PERATOM) dhdef[f] -= dph * q * invh * solid / (4.0 * M_PI);
-    // dD_T/dx_v = Phi'(q) Omega g / (12 pi h |g|) + Phi / (4 pi) dOmega/dx_v (d|g|/dx_v = g / 3|g|),
-    // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
-    const double cg = dph * solid * invh / (12.0 * M_PI * gl);
-    const double co = ph / (4.0 * M_PI);
-    for (int v = 0; v < 3; v++)
-      for (int d = 0; d < 3; d++) terms[s[v]].grad[d] += cg * g[d] + co * dom[v][d];
-    // contact candidates until the next neighbour build: every atom moves less than skin/2
-    if (rebuilt && gl < touch + 2.0 / 3.0 * edgemax) {
-      const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
-      const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
-      if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   at reneighbouring: the neighbour list split into the fluid pairs of the SPH sums and the
-   fluid-wall pairs of the wall boundary (same cell), so that the steps between exact evaluations
-   of the boundary do not visit the boundary pairs. With per-atom h the fluid pairs are only those
-   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches GROW x
-   the largest h of the run's start, most of it beyond every support once a cell has dried
-   (margin = skin at a build; 2 skin on a later split, since both atoms may have moved skin/2 from
-   the build positions before and move as much again after). Dropped pairs would be skipped by
-   the density pass anyway, so the sums are the same.
-------------------------------------------------------------------------- */
-
-void PairCellSPH::split_list(double margin)
-{
-  const tagint *molecule = atom->molecule;
-  const int *type = atom->type;
-  const int inum = list->inum;
-  const int peratom = hmode != HFIXED;
-  double **x = atom->x;
-  const double *hv = peratom ? atom->dvector[ih] : nullptr;
-  const double reach = CellKernel::support(kernel) * (1.0 + HMARGIN) * (1.0 + HGROW);
-  if (peratom) {
-    const int nall = atom->nlocal + atom->nghost;
-    hsplit.resize(nall);
-    for (int i = 0; i < nall; i++) hsplit[i] = fluid[type[i]] ? hv[i] : 0.0;
-  }
-  fluidfirst.assign(inum + 1, 0);
-  fluidj.clear();
-  boundarypairs.clear();
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    fluidfirst[ii] = static_cast<int>(fluidj.size());
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const PairConst &p = pc[type[i]][type[j]];
-      // each cell's fluid is bounded by its own wall: no pair with another cell's fluid
-      // (doc/pair_cell_sph.md, Wall boundary)
-      if (molecule[i] != molecule[j]) continue;
-      if (!p.boundary) {
-        if (peratom && fluid[type[i]] && fluid[type[j]]) {
-          // within margin of the support of (1 + HGROW) x the larger h (the comment above)
-          const double r = reach * std::max(hv[i], hv[j]) + margin;
-          const double delx = x[i][0] - x[j][0];
-          const double dely = x[i][1] - x[j][1];
-          const double delz = x[i][2] - x[j][2];
-          if (delx * delx + dely * dely + delz * delz >= r * r) continue;
-        }
-        fluidj.push_back(j);
-      } else
-        boundarypairs.push_back(fluid[type[i]] ? std::array<int, 2>{i, j}
-                                               : std::array<int, 2>{j, i});
-    }
-  }
-  fluidfirst[inum] = static_cast<int>(fluidj.size());
-  // the boundary pairs of each fluid atom in a row, in list order (a stable counting sort), so
-  // that its terms are summed per vertex as they come
-  const int nall = atom->nlocal + atom->nghost;
-  std::vector<int> first(nall + 1, 0);
-  for (const auto &fb : boundarypairs) first[fb[0] + 1]++;
-  for (int i = 0; i < nall; i++) first[i + 1] += first[i];
-  std::vector<std::array<int, 2>> sorted(boundarypairs.size());
-  for (const auto &fb : boundarypairs) sorted[first[fb[0]]++] = fb;
-  boundarypairs.swap(sorted);
-}
-
-/* ----------------------------------------------------------------------
-   per-atom h: an owned or ghost fluid atom whose h grew beyond (1 + HGROW) x its h at the last
-   split_list(), so that the split may lack pairs of its support (a local decision: the sums are
-   the same with or without a new split)
-------------------------------------------------------------------------- */
-
-bool PairCellSPH::outgrown() const
-{
-  const double *hv = atom->dvector[ih];
-  const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(hsplit.size()) < nall) return true;
-  for (int i = 0; i < nall; i++)
-    if (hv[i] > (1.0 + HGROW) * hsplit[i]) return true;
-  return false;
-}
-
-/* ----------------------------------------------------------------------
-   the positions of an exact evaluation, the base of the linearisation until the next: the atoms'
-   own (ahead = 0, and on a neighbour build, where the contact candidates are searched), or
-   half an interval ahead, x + v dt every / 2 (each atom's step at most skin/4), so that the
-   linearisation's error, quadratic in the displacement from the base, is the same at both ends
-   of the interval and cancels in the energy at the next exact evaluation (doc/pair_cell_sph.md)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::base_positions(int ahead)
-{
-  double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  // the linearisation from the last base at these positions, against the next (next_interval)
-  if (measuring) {
-    linear_deficit();
-    for (int i = 0; i < nall; i++) jump[i] = deficit[i];
-  }
-  predicted = ahead;
-  if (!predicted) {
-    for (int i = 0; i < nall; i++)
-      for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
-    return;
-  }
-  double **v = atom->v;
-  const double half = 0.5 * every * update->dt;
-  const double most = 0.25 * neighbor->skin;
-  for (int i = 0; i < nlocal; i++) {
-    const double step2 = half * half * (v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-    const double k = step2 > most * most ? most / sqrt(step2) : 1.0;
-    for (int d = 0; d < 3; d++) disp[i][d] = k * half * v[i][d];
-  }
-  commode = COMM_AHEAD;
-  CellCompat::forward_comm(comm, this);
-  for (int i = 0; i < nall; i++)
-    for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d] + disp[i][d];
-}
-
-/* ----------------------------------------------------------------------
-   the interval to the exact evaluation after the next, from the jump of 1 - gamma of every fluid
-   atom at this one (the new linearisation against the last, at the same positions: the jump of
-   the energy): doubled while the largest jump is below JUMP_TOL / 4, halved above JUMP_TOL,
-   between REFRESH and REFRESH_MAX steps
-------------------------------------------------------------------------- */
-
-void PairCellSPH::next_interval()
-{
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) jump[i] = deficit[i] - jump[i];
-  if (force->newton_pair) {
-    commode = COMM_JUMP;
-    CellCompat::reverse_comm(comm, this);
-  }
-  const int *type = atom->type;
-  double most = 0.0, all = 0.0;
-  for (int i = 0; i < nlocal; i++)
-    if (fluid[type[i]]) most = std::max(most, fabs(jump[i]));
-  MPI_Allreduce(&most, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  lastjump = all;
-  if (all > JUMP_TOL)
-    pending = std::max(every / 2, REFRESH);
-  else if (all < 0.25 * JUMP_TOL)
-    pending = std::min(every * 2, REFRESH_MAX);
-  else
-    pending = every;
-}
-
-/* ----------------------------------------------------------------------
-   after an exact evaluation: the terms (one per fluid atom and vertex, grad_v D_f summed over
-   the vertex's triangles) indexed per fluid atom; the deficits kept with the base positions
-   (base_positions) as the base of the linearisation
-------------------------------------------------------------------------- */
-
-void PairCellSPH::keep_base()
-{
-  const int nall = atom->nlocal + atom->nghost;
-  // the terms of fluid atom f are terms[termfirst[f]] .. terms[termfirst[f + 1] - 1], and
-  // gradsum[f] = sum_v grad_v D_f = -grad_f D_f
-  termfirst.assign(nall + 1, 0);
-  for (const Term &tm : terms) termfirst[tm.f + 1]++;
-  for (int i = 0; i < nall; i++) termfirst[i + 1] += termfirst[i];
-  for (int i = 0; i < nall; i++) {
-    deficit0[i] = deficit[i];
-    for (int d = 0; d < 3; d++) gradsum[i][d] = 0.0;
-  }
-  for (const Term &tm : terms)
-    for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
-  if (hmode != HFIXED) {
-    const double *hv = atom->dvector[ih];
-    for (int i = 0; i < nall; i++) {
-      dhdef0[i] = dhdef[i];
-      hbase[i] = hv[i];
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f)
-   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base, summed as
-   D_f(base) - gradsum_f . dx_f + sum_v grad_v D_f . dx_v (grad_f D_f = -gradsum_f)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::linear_deficit()
-{
-  double **x = atom->x;
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++)
-    for (int d = 0; d < 3; d++) disp[i][d] = x[i][d] - xbase[i][d];
-  const double *hv = hmode != HFIXED ? atom->dvector[ih] : nullptr;
-  for (int i = 0; i < nall; i++) {
-    double sum = 0.0;
-    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
-      const double *dv = disp[terms[k].v];
-      sum += terms[k].grad[0] * dv[0] + terms[k].grad[1] * dv[1] + terms[k].grad[2] * dv[2];
-    }
-    deficit[i] = deficit0[i] -
-        (gradsum[i][0] * disp[i][0] + gradsum[i][1] * disp[i][1] + gradsum[i][2] * disp[i][2]) +
-        sum;
-    if (hv) {
-      dhdef[i] = dhdef0[i];
-      deficit[i] += dhdef0[i] * (hv[i] - hbase[i]);
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   the wall term of each boundary pair, F_f = 2 m_f (P_f / rho_f) grad_f gamma_f (the fluid's
-   own pressure mirrored across the wall), its reaction on the wall atom, tallied as wall load
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> void PairCellSPH::wall_forces()
-{
-  double **x = atom->x;
-  double **f = atom->f;
-  const double *rmass = atom->rmass;
-  const double *rho = atom->dvector[irho];
-
-  // the forces on the wall atoms go into wallload (zero before, from sum_density), added to f
-  // at the end
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) {
-    // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
-    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
-    if (termfirst[i] == termfirst[i + 1]) continue;
-    const double c = 1.0 - deficit[i] < gamma_min ? 0.0 : rmass[i] * prho2[i] * rho[i];
-    if (c == 0.0) continue;
-    f[i][0] += c * gradsum[i][0];
-    f[i][1] += c * gradsum[i][1];
-    f[i][2] += c * gradsum[i][2];
-    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
-      const Term &tm = terms[k];
-      const int v = tm.v;
-      const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
-      wallload[v][0] -= fx;
-      wallload[v][1] -= fy;
-      wallload[v][2] -= fz;
-      if (EVFLAG)
-        ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
-                     x[i][1] - x[v][1], x[i][2] - x[v][2]);
-    }
-  }
-
-  // contacts with the wall surface: the candidates of the neighbour build within reach + margin
-  // (near), taken again from all of them once an atom has moved margin / 2 since
-  const double margin = NEAR * neighbor->skin;
-  if (rebuilt || moved_since_near(0.5 * margin)) {
-    near.clear();
-    for (const auto &t : touching)
-      if (contact<EVFLAG>(t[0], t[1], t[2], t[3], margin)) near.push_back(t);
-    for (int i = 0; i < nall; i++)
-      for (int d = 0; d < 3; d++) xnear[i][d] = x[i][d];
-  } else {
-    for (const auto &t : near) contact<EVFLAG>(t[0], t[1], t[2], t[3], margin);
-  }
-  if (background != 0.0) outside_pressure<EVFLAG>();
-  for (int i = 0; i < nall; i++)
-    for (int d = 0; d < 3; d++) f[i][d] += wallload[i][d];
-}
-
-/* ----------------------------------------------------------------------
-   background pressure P_b from outside on every wall triangle kept by an owned wall atom b:
-   -P_b S_T / 3 on each vertex (S_T the outward area vector), energy P_b V_T,
-   V_T = x_b . S_T / 3 with x_b unwrapped (the closed wall's volume by the divergence theorem),
-   tallied as wall load so that the load is the fluid's P alone (doc/pair_cell_sph.md, eq. B2)
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> void PairCellSPH::outside_pressure()
-{
-  double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const double p3 = background / 3.0;
-  for (int b = 0; b < nlocal; b++) {
-    const int t0 = tris->first(b), nt = tris->count(b);
-    for (int t = t0; t < t0 + nt; t++) {
-      const int a = tris->a(t), c = tris->c(t);
-      if (a < 0 || c < 0)
-        error->one(FLERR,
-                   "Pair cell/sph: background pressure: a wall triangle of atom {} (cell {}) has "
-                   "a vertex on no rank on step {} (ghost cutoff too short)",
-                   atom->tag[b], atom->molecule[b], update->ntimestep);
-      // S_T = (x_b - x_a) x (x_c - x_a) / 2, outward; -P_b dV/dx_k = -P_b S_T / 3 (eq. B2)
-      double ab[3], ac[3], fn[3];
-      for (int d = 0; d < 3; d++) {
-        ab[d] = x[b][d] - x[a][d];
-        ac[d] = x[c][d] - x[a][d];
-      }
-      fn[0] = -0.5 * p3 * (ab[1] * ac[2] - ab[2] * ac[1]);
-      fn[1] = -0.5 * p3 * (ab[2] * ac[0] - ab[0] * ac[2]);
-      fn[2] = -0.5 * p3 * (ab[0] * ac[1] - ab[1] * ac[0]);
-      const int v[3] = {a, b, c};
-      for (int k = 0; k < 3; k++)
-        for (int d = 0; d < 3; d++) wallload[v[k]][d] += fn[d];
-      if (!EVFLAG) continue;
-      if (eflag_either) {
-        // P_b V_T = -x_b . F_k (F_k = -P_b S_T / 3), x_b unwrapped
-        double xb[3];
-        domain->unmap(x[b], atom->image[b], xb);
-        const double e = -(xb[0] * fn[0] + xb[1] * fn[1] + xb[2] * fn[2]);
-        if (eflag_global) eng_vdwl += e;
-        if (eflag_atom) eatom[b] += e;
-      }
-      if (vflag_either) {
-        // virial sum_k x_k F_k (as F dot r over owned and ghost atoms)
-        for (int k = 0; k < 3; k++) {
-          const double *xk = x[v[k]];
-          const double w[6] = {xk[0] * fn[0], xk[1] * fn[1], xk[2] * fn[2],
-                               xk[0] * fn[1], xk[0] * fn[2], xk[1] * fn[2]};
-          for (int m = 0; m < 6; m++) {
-            if (vflag_global) virial[m] += w[m];
-            if (vflag_atom) vatom[v[k]][m] += w[m];
-          }
-        }
-      }
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   contact of fluid atom f with triangle (a, b, c) of its own cell's wall: F = F_c (1 - d/delta)^2 e
-   from the closest point p at distance d < delta, e = (x_f - p)/d, on the fluid atom and
-   -lambda_v F on vertex v (newton on, the vertices' share as wall load), energy
-   F_c delta (1 - d/delta)^3 / 3, so that F = -grad E for the atom and the vertices; true if
-   d < delta + margin
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> bool PairCellSPH::contact(int f, int a, int b, int c, double margin)
-{
-  const PairConst &p = pc[atom->type[f]][atom->type[b]];
-  double **x = atom->x;
-  const CellTriangle::Foot ft = CellTriangle::closest(x[f], x[a], x[b], x[c]);
-  const double e[3] = {x[f][0] - ft.p[0], x[f][1] - ft.p[1], x[f][2] - ft.p[2]};
-  const double dist = sqrt(CellTriangle::dot(e, e));
-  if (dist >= p.reach) return dist < p.reach + margin;
-  if (dist == 0.0)
-    error->one(FLERR,
-               "Pair cell/sph: fluid atom {} (cell {}) lies on its wall on step {}: the contact "
-               "force has no direction; the run went unstable",
-               atom->tag[f], atom->molecule[f], update->ntimestep);
-  const double s = 1.0 - dist / p.reach;
-  const double fd = p.fcontact * s * s / dist;
-  // F = F_c (1 - d/delta)^2 (x_f - p) / d
-  double force[3] = {fd * e[0], fd * e[1], fd * e[2]};
-  const int v[3] = {a, b, c};
-  double fv[3][3];
-  double **fatom = atom->f;
-  for (int d = 0; d < 3; d++) {
-    fatom[f][d] += force[d];
-    for (int k = 0; k < 3; k++) {
-      fv[k][d] = -ft.l[k] * force[d];
-      wallload[v[k]][d] += fv[k][d];
-    }
-  }
-  if (!EVFLAG) return true;
-  const double energy = p.fcontact * p.reach * s * s * s / 3.0;
-  if (eflag_global) eng_vdwl += energy;
-  if (eflag_atom) eatom[f] += energy;
-  if (vflag_either) {
-    // virial about vertex c: sum over f, a, b of (x - x_c) F
-    double dfc[3], dac[3], dbc[3];
-    for (int d = 0; d < 3; d++) {
-      dfc[d] = x[f][d] - x[c][d];
-      dac[d] = x[a][d] - x[c][d];
-      dbc[d] = x[b][d] - x[c][d];
-    }
-    v_tally4(f, a, b, c, force, fv[0], fv[1], dfc, dac, dbc);
-  }
-  return true;
-}
-
-/* ----------------------------------------------------------------------
-   true if an owned or ghost atom has moved more than dmax since the near contact candidates were
-   taken (a local decision: the contacts are the same with either list)
-------------------------------------------------------------------------- */
-
-bool PairCellSPH::moved_since_near(double dmax) const
-{
-  double **x = atom->x;
-  const int nall = atom->nlocal + atom->nghost;
-  const double dmax2 = dmax * dmax;
-  for (int i = 0; i < nall; i++) {
-    const double dx = x[i][0] - xnear[i][0];
-    const double dy = x[i][1] - xnear[i][1];
-    const double dz = x[i][2] - xnear[i][2];
-    if (dx * dx + dy * dy + dz * dz > dmax2) return true;
-  }
-  return false;
-}
-
-/* ----------------------------------------------------------------------
-   Phi(q), the fraction of the 3-D kernel beyond q = r/h, and dPhi/dq = -4 pi q^2 W(q) at h = 1,
-   tabulated from the kernel (3-point Gauss-Legendre per step, exact for the kernels' pieces,
-   which end on table points) for cubic Hermite interpolation
-------------------------------------------------------------------------- */
-
-void PairCellSPH::tabulate_phi()
-{
-  const double support = CellKernel::support(kernel);
-  const int n = 512 * static_cast<int>(support);
-  const CellKernel::Scale unit = CellKernel::scale(kernel, 3, 1.0);
-  const auto shell = [&](double q) { return 4.0 * M_PI * q * q * CellKernel::W(kernel, unit, q); };
-  static const double GX = 0.7745966692414834, GW0 = 8.0 / 9.0, GW1 = 5.0 / 9.0;
-  phidq = support / n;
-  phi.assign(n + 1, 0.0);
-  dphi.assign(n + 1, 0.0);
-  for (int k = n - 1; k >= 0; k--) {
-    const double mid = (k + 0.5) * phidq, half = 0.5 * phidq;
-    const double sum = GW0 * shell(mid) + GW1 * (shell(mid - half * GX) + shell(mid + half * GX));
-    phi[k] = phi[k + 1] + half * sum;
-    dphi[k] = -shell(k * phidq);
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::phi_beyond(double q, double &value, double &slope) const
-{
-  const int k = static_cast<int>(q / phidq);
-  if (k >= static_cast<int>(phi.size()) - 1) {
-    value = slope = 0.0;
-    return;
-  }
-  const double t = q / phidq - k;
-  const double t2 = t * t, t3 = t2 * t;
-  // cubic Hermite between the table points k and k + 1, and its derivative in q
-  value = (2.0 * t3 - 3.0 * t2 + 1.0) * phi[k] + (t3 - 2.0 * t2 + t) * phidq * dphi[k] +
-      (3.0 * t2 - 2.0 * t3) * phi[k + 1] + (t3 - t2) * phidq * dphi[k + 1];
-  slope = (6.0 * t2 - 6.0 * t) * (phi[k] - phi[k + 1]) / phidq +
-      (3.0 * t2 - 4.0 * t + 1.0) * dphi[k] + (3.0 * t2 - 2.0 * t) * dphi[k + 1];
-}
-
-/* ----------------------------------------------------------------------
-   pressure of owned fluid atoms from their density; P/rho^2 and 1/rho for the force pass;
-   the equation-of-state energy m_i e(rho_i), e' = P/rho^2, whose gradient is the pressure force
-------------------------------------------------------------------------- */
-
-/* ----------------------------------------------------------------------
    stop a run whose density left (0, 2 rho0] (a weakly compressible fluid never gets there unless
    the run went unstable), saying where and the likely cause
 ------------------------------------------------------------------------- */
@@ -1229,7 +599,10 @@ void PairCellSPH::unstable(int i) const
              0.25 * (hmode == HFIXED ? h[t][t] : atom->dvector[ih][i]) / c, c);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   pressure of owned fluid atoms from their density; P/rho^2 and 1/rho for the force pass;
+   the equation-of-state energy m_i e(rho_i), e' = P/rho^2, whose gradient is the pressure force
+------------------------------------------------------------------------- */
 
 void PairCellSPH::apply_eos()
 {
@@ -1246,12 +619,12 @@ void PairCellSPH::apply_eos()
     const int t = type[i];
     if (!fluid[t]) continue;
     // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
-    const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    const double gamma = walls ? std::max(1.0 - wall.deficit[i], wall.GAMMA_MIN) : 1.0;
     // h adaptive: Omega = 1 + h/(d rho) drho/dh, drho/dh = S'/gamma + S D'/gamma^2 (above the
     // floor); it divides the atom's density gradient (doc/pair_cell_sph.md); 1 at fixed h
     double omega = 1.0;
     if (hmode == HADAPTIVE) {
-      const double dgamma = walls && 1.0 - deficit[i] >= gamma_min ? -dhdef[i] : 0.0;
+      const double dgamma = walls && 1.0 - wall.deficit[i] >= wall.GAMMA_MIN ? -wall.dhdef[i] : 0.0;
       const double dr = dsum[i] / gamma - rho[i] * dgamma / (gamma * gamma);
       omega = 1.0 + atom->dvector[ih][i] * dr * gamma / (domain->dimension * rho[i]);
     }
@@ -1294,7 +667,7 @@ void PairCellSPH::apply_eos()
     const int i = ilist[ii];
     const int t = type[i];
     if (!fluid[t]) continue;
-    const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    const double gamma = walls ? std::max(1.0 - wall.deficit[i], wall.GAMMA_MIN) : 1.0;
     const double omega = hmode == HADAPTIVE ? atom->dvector[iomega][i] : 1.0;
     // P_b + P in the forces; e gains P_b (1/rho0 - 1/rho) (doc/pair_cell_sph.md, eq. B1)
     prho2[i] += background * rhoinv[i] * rhoinv[i] / (gamma * omega);
@@ -1391,11 +764,12 @@ void PairCellSPH::allocate()
       setflag[i][j] = 0;
       rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
       boundary[i][j] = 0;
-      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
+      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0};
     }
     wself[i] = invrho0[i] = hcap[i] = 0.0;
     fluid[i] = 0;
   }
+  wall.allocate(n);
 }
 
 /* ----------------------------------------------------------------------
@@ -1549,8 +923,8 @@ void PairCellSPH::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
   double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0;
-  const int wall = narg >= 3 && strcmp(arg[2], "wall") == 0;
-  if (wall) {
+  const int iswall = narg >= 3 && strcmp(arg[2], "wall") == 0;
+  if (iswall) {
     if (ilo <= jhi && jlo <= ihi)
       error->all(FLERR,
                  "Pair_coeff cell/sph: {} {} wall: a type cannot be the wall of itself (give the "
@@ -1614,7 +988,7 @@ void PairCellSPH::coeff(int narg, char **arg)
       bulk[i][j] = bulk_one;
       mu[i][j] = mu_one;
       h[i][j] = h_one;
-      boundary[i][j] = wall;
+      boundary[i][j] = iswall;
       setflag[i][j] = 1;
       count++;
     }
@@ -1688,42 +1062,8 @@ void PairCellSPH::init_style()
                pb);
   }
   if (walls) {
-    if (domain->dimension != 3)
-      error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
-    if (!atom->molecule_flag)
-      error->all(FLERR,
-                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs cell (molecule) "
-                 "IDs: use atom_style angle");
-    if (!force->angle)
-      error->all(FLERR,
-                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs the wall "
-                 "triangles as angles: define an angle style (angle_style zero)");
-    if (!force->newton_pair)
-      error->all(FLERR,
-                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs newton pair on "
-                 "(the wall's reactions go to ghost atoms)");
-    if (!atom->num_angle)
-      error->all(FLERR, "Pair cell/sph: the wall boundary needs an atom style with angles");
-    // the contact candidates kept between exact evaluations assume no atom has moved half the
-    // skin since the last build, which LAMMPS checks every step only with these settings
-    if (comm->me == 0 && (neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check))
-      error->warning(FLERR,
-                     "Pair cell/sph: the wall boundary wants neigh_modify delay 0 every 1 check "
-                     "yes (now delay {} every {} check {}; the default of LAMMPS before 3 Nov "
-                     "2022 is delay 10): atoms may move past the skin between builds",
-                     neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
-    // the support at the largest h of a fluid type with a boundary (fixed: its h)
-    wallsupport = 0.0;
-    for (int i = 1; i <= n; i++)
-      for (int j = i; j <= n; j++)
-        if (setflag[i][j] && boundary[i][j]) {
-          const int f = setflag[i][i] ? i : j;
-          wallsupport = std::max(
-              wallsupport, CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]));
-        }
-    tabulate_phi();
+    wall.init();
     comm_forward = std::max(3, CellWallTriangles::COMM_SIZE);
-    tris->start_run();
   }
   writedata = all_set ? 1 : 0;
   if (viscous && !comm->ghost_velocity)
@@ -1770,26 +1110,13 @@ double PairCellSPH::run_hcap(int t) const
 double PairCellSPH::init_one(int i, int j)
 {
   if (!setflag[i][j]) {
-    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
+    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0};
     return 0.0;
   }
   if (boundary[i][j]) {
-    const int f = setflag[i][i] ? i : j, w = f == i ? j : i;
-    if (!setflag[f][f] || setflag[w][w])
-      error->all(FLERR,
-                 "Pair cell/sph: pair_coeff {} {} wall needs one fluid type (with pair_coeff K K "
-                 "cell/sph) and one wall type (without)",
-                 i, j);
-    const double support = CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]);
-    // contact range delta = h / 5 and force F_c = K delta^2 at the surface (doc/pair_cell_sph.md)
-    const double reach = h[f][f] / CONTACT_H;
-    // the neighbour range reaches every triangle whose centroid is inside the kernel support:
-    // the centroid is within 2/3 of the longest edge of the triangle's keeper
-    const double range = support + 2.0 / 3.0 * (tris->edge_cap() - neighbor->skin);
-    pc[i][j] = PairConst{range * range, CellKernel::scale(kernel, 3, h[f][f]),
-                         0.0,           1,
-                         reach,         bulk[f][f] * reach * reach};
-    pc[j][i] = pc[i][j];
+    // the wall boundary's own constants; no SPH sums over the pair
+    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0};
+    const double range = wall.init_pair(i, j);
     return cut_global > 0.0 ? std::max(cut_global, range) : range;
   }
   for (int t : {i, j}) {
@@ -1820,7 +1147,6 @@ double PairCellSPH::init_one(int i, int j)
   pc[i][j].cutsq = reach * reach;
   pc[i][j].scale = CellKernel::scale(kernel, dim, h[i][j]);
   pc[i][j].mu2 = 2.0 * mu[i][j];
-  pc[i][j].boundary = 0;
   pc[j][i] = pc[i][j];
 
   if (i == j) {
@@ -1853,8 +1179,7 @@ void PairCellSPH::update_viscosity()
   const int n = atom->ntypes;
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
-      if (setflag[i][j] && !pc[i][j].boundary)
-        pc[i][j].mu2 = pc[j][i].mu2 = 2.0 * mu[i][j] * muscale;
+      if (setflag[i][j] && !boundary[i][j]) pc[i][j].mu2 = pc[j][i].mu2 = 2.0 * mu[i][j] * muscale;
 }
 
 /* ----------------------------------------------------------------------
@@ -2109,7 +1434,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
 {
   fforce = 0.0;
   const PairConst &p = pc[itype][jtype];
-  if (rsq >= p.cutsq || p.boundary) return 0.0;
+  if (rsq >= p.cutsq) return 0.0;    // also a wall boundary pair (cutsq 0)
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
   if (hmode != HFIXED) {
@@ -2159,12 +1484,8 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES) return tris->pack(n, list, buf);
-  if (commode == COMM_AHEAD) {
-    for (int k = 0; k < n; k++)
-      for (int d = 0; d < 3; d++) buf[m++] = disp[list[k]][d];
-    return m;
-  }
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD)
+    return wall.pack_forward(commode, n, list, buf);
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
     for (int k = 0; k < n; k++) buf[m++] = hv[list[k]];
@@ -2176,7 +1497,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
   for (int k = 0; k < n; k++) {
     buf[m++] = rho[list[k]];
     buf[m++] = pressure[list[k]];
-    if (walls) buf[m++] = deficit[list[k]];
+    if (walls) buf[m++] = wall.deficit[list[k]];
     if (peratom) {
       buf[m++] = atom->dvector[ih][list[k]];
       buf[m++] = atom->dvector[iomega][list[k]];
@@ -2190,13 +1511,8 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES) {
-    tris->unpack(n, first, buf);
-    return;
-  }
-  if (commode == COMM_AHEAD) {
-    for (int i = first; i < first + n; i++)
-      for (int d = 0; d < 3; d++) disp[i][d] = buf[m++];
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD) {
+    wall.unpack_forward(commode, n, first, buf);
     return;
   }
   if (commode == COMM_H) {
@@ -2210,7 +1526,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     rho[i] = buf[m++];
     pressure[i] = buf[m++];
-    if (walls) deficit[i] = buf[m++];
+    if (walls) wall.deficit[i] = buf[m++];
     if (peratom) {
       atom->dvector[ih][i] = buf[m++];
       atom->dvector[iomega][i] = buf[m++];
@@ -2228,22 +1544,16 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
   int m = 0;
   if (commode == COMM_DENSITY || commode == COMM_SUMS) {
     const double *rho = atom->dvector[irho];
-    const int peratom = hmode != HFIXED, wall = walls && commode == COMM_DENSITY;
+    const int peratom = hmode != HFIXED, deficits = walls && commode == COMM_DENSITY;
     for (int i = first; i < first + n; i++) {
       buf[m++] = rho[i];
       if (peratom) buf[m++] = dsum[i];
-      if (wall) buf[m++] = deficit[i];
-      if (wall && peratom) buf[m++] = dhdef[i];
+      if (deficits) buf[m++] = wall.deficit[i];
+      if (deficits && peratom) buf[m++] = wall.dhdef[i];
     }
     return m;
   }
-  if (commode == COMM_JUMP) {
-    for (int i = first; i < first + n; i++) buf[m++] = jump[i];
-    return m;
-  }
-  for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) buf[m++] = wallload[i][d];
-  return m;
+  return wall.pack_reverse(commode, n, first, buf);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2253,21 +1563,16 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
   int m = 0;
   if (commode == COMM_DENSITY || commode == COMM_SUMS) {
     double *rho = atom->dvector[irho];
-    const int peratom = hmode != HFIXED, wall = walls && commode == COMM_DENSITY;
+    const int peratom = hmode != HFIXED, deficits = walls && commode == COMM_DENSITY;
     for (int k = 0; k < n; k++) {
       rho[list[k]] += buf[m++];
       if (peratom) dsum[list[k]] += buf[m++];
-      if (wall) deficit[list[k]] += buf[m++];
-      if (wall && peratom) dhdef[list[k]] += buf[m++];
+      if (deficits) wall.deficit[list[k]] += buf[m++];
+      if (deficits && peratom) wall.dhdef[list[k]] += buf[m++];
     }
     return;
   }
-  if (commode == COMM_JUMP) {
-    for (int k = 0; k < n; k++) jump[list[k]] += buf[m++];
-    return;
-  }
-  for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) wallload[list[k]][d] += buf[m++];
+  wall.unpack_reverse(commode, n, list, buf);
 }
 
 /* ----------------------------------------------------------------------
@@ -2289,13 +1594,28 @@ double PairCellSPH::memory_usage()
   double bytes = Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
   if (hmode != HFIXED)
-    bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
-        step.capacity() * sizeof(double);
-  if (walls)
-    bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
-        terms.capacity() * sizeof(Term) + termlen.capacity() * sizeof(double) +
-        (touching.capacity() + near.capacity()) * sizeof(touching[0]) +
-        fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
-        hsplit.capacity() * sizeof(double) + boundarypairs.capacity() * sizeof(boundarypairs[0]);
+    bytes +=
+        nmax * 4.0 * sizeof(double) + maxpairs * sizeof(double) + step.capacity() * sizeof(double);
+  if (walls) bytes += wall.memory_usage(hmode != HFIXED);
   return bytes;
+}
+
+/* ----------------------------------------------------------------------
+   a forward comm of the kind mode (owned to ghost atoms)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::forward(int mode)
+{
+  commode = static_cast<decltype(commode)>(mode);
+  CellCompat::forward_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   a reverse comm of the kind mode: the ghost atoms' sums into their owners, with newton pair on
+------------------------------------------------------------------------- */
+
+void PairCellSPH::reverse(int mode)
+{
+  commode = static_cast<decltype(commode)>(mode);
+  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
 }
