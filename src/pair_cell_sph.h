@@ -1,7 +1,11 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    pair_style cell/sph: the cell fluid, summation density with per-atom mass, pressure force F^p
-   and Morris viscous force F^v (doc/model.md §3.1-3.5)
+   and Morris viscous force F^v (doc/model.md §3.1-3.5). The class's parts: the density and
+   force passes (pair_cell_sph.cpp), h adaptive (pair_cell_sph_adaptive_h.cpp), the keywords,
+   coefficients and init (pair_cell_sph_settings.cpp), restart and data files
+   (pair_cell_sph_restart.cpp); the wall boundary is a component of its own, the member wall
+   (pair_cell_sph_boundary.h)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_CELL_SPH_H
@@ -12,7 +16,6 @@
 #include "pair.h"
 #include "pair_cell_sph_boundary.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -88,7 +91,6 @@ class PairCellSPH : public Pair {
   double background_min;    // P_min (Pa)
   int parse_background(int, char **);
   void update_background();
-  template <int EVFLAG> void outside_pressure();
 
   struct PairConst {
     double cutsq;               // (kernel support)^2; 0 if the pair is not computed (or a wall
@@ -107,9 +109,10 @@ class PairCellSPH : public Pair {
   // per-atom h (h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
   // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
   int ih, iomega;
-  double *hcap;       // largest h the neighbour cutoff allows, per fluid type
-  double **hscale;    // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
-  double *dsum;       // d(sum_j m_j W(r_ij, h_i))/dh_i
+  double *hcap;                // largest h the neighbour cutoff allows, per fluid type
+  double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
+  double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
+  std::vector<double> step;    // h adaptive: Newton step of h of the list's atoms
 
   // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
   // cell's wall (pair_cell_sph_boundary.h); boundary[i][j] of pair_coeff, walls if any is set
@@ -117,7 +120,6 @@ class PairCellSPH : public Pair {
   int **boundary;    // 1 for a fluid-wall type pair of the wall boundary
   int walls;         // 1 if any type pair is a boundary pair (init_style)
   PairCellSPHBoundary wall;
-  std::vector<double> step;    // h adaptive: Newton step of h of the list's atoms
 
   // what the next forward or reverse comm carries: the fluid's density pass (rho, pressure, with
   // the wall boundary's deficit), its sums only, or h; or the wall boundary's (its pack_*)
@@ -143,6 +145,7 @@ class PairCellSPH : public Pair {
     double lag = -1.0;       // background auto lag (s); < 0: not given
   };
   void read_settings(FILE *, Removed &, std::string &, std::string &, double &);
+  const char *removed_setting(const Removed &) const;
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
   double *rhoinv;    // 1 / rho of owned and ghost fluid atoms
@@ -157,25 +160,31 @@ class PairCellSPH : public Pair {
   double *pairmu;     // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
   int maxfirst, maxpairs;
 
-  void allocate();
+  // the density and force passes (pair_cell_sph.cpp)
   void grow_peratom();
   void destroy_peratom();
-  void unstable(int) const;
+  void density_pass(int);
+  template <int KERNEL, int PERATOM> void self_density();
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
-  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
   template <int KERNEL, int VISCOUS>
   void peratom_pair(int, int, double, double, int, double &, double &);
   template <int KERNEL, int VISCOUS> void resum_density();
-  void density_pass(int);
+  void grow_pairs(int);
+  void apply_eos();
+  void unstable(int) const;
+  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
+  // h adaptive (pair_cell_sph_adaptive_h.cpp)
   void atom_h(int &);
   void kernel_scales();
-  double newton_h();
   void solve_h();
+  double newton_h();
   void too_long(int) const;
-  double run_hcap(int) const;
   void unsolvable(int, double) const;
-  void apply_eos();
-  void grow_pairs(int);
+  // pair_coeff arrays and the checks of init_style (pair_cell_sph_settings.cpp)
+  void allocate();
+  void find_fields();
+  void check_masses();
+  double run_hcap(int) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -653,7 +653,7 @@ template <int EVFLAG> void PairCellSPHBoundary::wall_forces()
   const double *rmass = atom->rmass;
   const double *rho = atom->dvector[sph->irho];
 
-  // the forces on the wall atoms go into wallload (zero before, from sum_density), added to f
+  // the forces on the wall atoms go into wallload (zero before, from start_sums), added to f
   // at the end
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
