@@ -12,72 +12,24 @@
 
 #include "atom.h"
 #include "cell_compat.h"
-#include "cell_limits.h"
-#include "cell_params.h"
-#include "cell_restart.h"
-#include "cell_triangle.h"
-#include "cell_wall_triangles.h"
-#include "cell_water.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "input.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
-#include "variable.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstring>
-#include <vector>
 
 using namespace LAMMPS_NS;
 
-// 2: per type pair, whether it is a wall boundary pair; 3: the smoothing-length mode and eta;
-// 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
-// wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag;
-// 11: background auto's P_b now; 12: without the removed eos, Tref, shift, tensile, adhesion W,
-// grow and lag (read_settings reads them from older files)
-static const int RESTART_VERSION = 12;
-// the temperature (K) of the pair_coeff viscosity mu: 25 C
-static const double TREF = 298.15;
-
-static const char *const HMODE_NAMES[] = {"fixed", "mass", "adaptive"};
-// per-atom h: the neighbour cutoff allows h up to GROW x the largest h at the run's start
-// (run_hcap; unless a cutoff is given)
-static const double GROW = 1.5;
-// h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
-static const double HTOL = 1e-10;
-static const int HITER = 50;
-// h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger h,
-// so that the iterations sum over those pairs only while every h changed by less than HMARGIN
-static const double HMARGIN = 1e-3;
-// per-atom h with the wall boundary: the fluid pairs kept at a split of the list allow each h to
-// grow by HGROW before the list is split again (split_list)
-static const double HGROW = 0.05;
 // h adaptive with the wall boundary: exact evaluations of the boundary at the first step of a run
 // whose h had no value yet (h starts from the pair_coeff value)
 static const int HSTART = 4;
-
-// contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
-static const double CONTACT_H = 2.5;
-// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval) and on
-// reneighbouring, linearised in between in the displacements from a base half an interval ahead
-// (base_positions)
-static const int REFRESH = 20;
-static const int REFRESH_MAX = 320;
-// the largest jump of 1 - gamma of a fluid atom at an exact evaluation that lets the interval grow
-// (doc/pair_cell_sph.md, cost control: 1e-6 is 20 Pa of pressure at K = 20 MPa)
-static const double JUMP_TOL = 1e-6;
-// contacts: the near candidates lie within reach + NEAR x skin of the wall (wall_forces)
-static const double NEAR = 0.25;
-// background auto: the default relaxation time of P_b, in steps (doc/pair_cell_sph.md: 20 steps
-// let the seed cell's breathing grow in undamped dynamics, 200 damp it)
-static const int AUTO_LAG = 200;
 
 /* ---------------------------------------------------------------------- */
 
@@ -86,16 +38,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), background(0.0), background_set(0),
     background_auto(0), background_min(0.0), pc(nullptr), wself(nullptr), invrho0(nullptr),
     fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1),
-    hcap(nullptr), hscale(nullptr), dsum(nullptr), dhdef(nullptr), dhdef0(nullptr), hbase(nullptr),
-    boundary(nullptr), walls(0), wallsupport(0.0), gamma_min(0.25), phidq(0.0), deficit(nullptr),
-    wallload(nullptr),
-    tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
-    deficit0(nullptr), xbase(nullptr), gradsum(nullptr), disp(nullptr), jump(nullptr),
-    xnear(nullptr), slot(nullptr), refreshing(1), rebuilt(1), predicted(0), measuring(0),
-    every(REFRESH), pending(REFRESH), lastjump(0.0), refreshed(-1), commode(COMM_DENSITY),
-    restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr),
-    pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr), pairmu(nullptr), maxfirst(0),
-    maxpairs(0)
+    hcap(nullptr), hscale(nullptr), dsum(nullptr), boundary(nullptr), walls(0), wall(lmp, this),
+    commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0),
+    pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
+    pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -124,7 +70,6 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairdwj);
   memory->destroy(pairr);
   memory->destroy(pairmu);
-  delete tris;
   if (allocated) {
     memory->destroy(boundary);
     memory->destroy(setflag);
@@ -148,33 +93,12 @@ void PairCellSPH::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   const int peratom = hmode != HFIXED;
-  const bool grown = atom->nmax > nmax || (walls && !deficit) || (peratom && !dsum);
+  const bool grown = atom->nmax > nmax || (walls && !wall.deficit) || (peratom && !dsum);
   if (grown) grow_peratom();
   if (temp_set) update_viscosity();
   if (background_in.is_variable()) update_background();
 
-  if (walls) {
-    rebuilt = neighbor->ago == 0 || grown;
-    if (rebuilt) {
-      tris->build();
-      // a triangle whose centroid is within the support of f until the next build has its
-      // vertices within the support + its centroid-vertex distance + skin of f, and that
-      // distance grows by < skin (doc/pair_cell_sph.md, Restrictions)
-      tris->check_ghost_cutoff("the kernel support", wallsupport, 1, 2);
-      commode = COMM_TRIANGLES;
-      CellCompat::forward_comm(comm, this);
-    }
-    if (update->setupflag) {
-      every = pending = REFRESH;
-      lastjump = 0.0;
-    }
-    refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
-    measuring = refreshing && !rebuilt;
-    if (refreshing) {
-      refreshed = update->ntimestep;
-      every = pending;
-    }
-  }
+  if (walls) wall.start_step(grown);
   // per-atom h; h adaptive starting from the pair_coeff value: the boundary evaluated exactly at
   // the converged h again, so that its linearisation in h starts there
   int passes = 1;
@@ -184,22 +108,19 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  if (walls && rebuilt) split_list(neighbor->skin);
+  if (walls && wall.rebuilt) wall.split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
-    if (pass > 0) refreshing = 1, measuring = 0;
-    // the base ahead in dynamics only (a minimisation's velocities are not its motion)
-    if (walls && refreshing) base_positions(!rebuilt && pass == 0 && update->whichflag == 1);
+    if (walls) wall.start_pass(pass);
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
   }
   // compute pair sums pvector over ranks: the global values on rank 0, 0 elsewhere or without walls
   const int reports = walls && comm->me == 0;
-  pvector[0] = reports ? every : 0.0;
-  pvector[1] = reports ? lastjump : 0.0;
+  pvector[0] = reports ? wall.every : 0.0;
+  pvector[1] = reports ? wall.lastjump : 0.0;
   apply_eos();
   pvector[2] = comm->me == 0 ? background : 0.0;
-  commode = COMM_DENSITY;
-  CellCompat::forward_comm(comm, this);
+  forward(COMM_DENSITY);
 
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
@@ -210,7 +131,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     if (fluid[type[i]]) {
       rhoinv[i] = 1.0 / rho[i];
       prho2[i] = (pressure[i] + background) * rhoinv[i] * rhoinv[i];
-      if (walls) prho2[i] /= std::max(1.0 - deficit[i], gamma_min);
+      if (walls) prho2[i] /= std::max(1.0 - wall.deficit[i], wall.GAMMA_MIN);
       if (peratom) prho2[i] /= omega[i];
     }
 
@@ -223,14 +144,7 @@ void PairCellSPH::compute(int eflag, int vflag)
                                        {CELLSPH_FORCES(1, 0), CELLSPH_FORCES(1, 1)}};
 #undef CELLSPH_FORCES
   (this->*FORCES[viscous][evflag ? 1 : 0][peratom])();
-  if (walls) {
-    if (evflag)
-      wall_forces<1>();
-    else
-      wall_forces<0>();
-    commode = COMM_LOAD;
-    if (force->newton_pair) CellCompat::reverse_comm(comm, this);
-  }
+  if (walls) wall.forces(evflag);
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -244,7 +158,7 @@ void PairCellSPH::compute(int eflag, int vflag)
 void PairCellSPH::density_pass(int first)
 {
   // per-atom h grown beyond the split's allowance: split again (split_list)
-  if (walls && hmode != HFIXED && outgrown()) split_list(2.0 * neighbor->skin);
+  if (walls && hmode != HFIXED && wall.outgrown()) wall.split_list(2.0 * neighbor->skin);
   typedef void (PairCellSPH::*Loop)(int);
 #define CELLSPH_DENSITY(V, W, P)                                 \
   {                                                              \
@@ -275,192 +189,22 @@ void PairCellSPH::density_pass(int first)
     (this->*DENSITY[walls][viscous][hmode != HFIXED][kernel])(first);
     hdrift = 0.0;
   }
-  if (walls && first) {
-    if (refreshing) {
-      keep_base();
-      // a base ahead of the atoms: the linearised deficit at their positions now
-      if (predicted) linear_deficit();
-      if (measuring) next_interval();
-    }
-  }
-  commode = first ? COMM_DENSITY : COMM_SUMS;
-  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
+  if (walls && first) wall.after_density();
+  reverse(first ? COMM_DENSITY : COMM_SUMS);
 }
 
 /* ----------------------------------------------------------------------
-   per-atom h of owned and ghost fluid atoms (h adaptive): the last step's h (the start of its
-   Newton iteration), the pair_coeff h for an atom without one (fresh = 1 if an owned atom had
-   none); then the kernel constants of every atom
-------------------------------------------------------------------------- */
-
-void PairCellSPH::atom_h(int &fresh)
-{
-  double *hv = atom->dvector[ih];
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  fresh = 0;
-  for (int i = 0; i < nall; i++) {
-    const int t = type[i];
-    if (!fluid[t]) continue;
-    if (!(hv[i] > 0.0)) {
-      hv[i] = h[t][t];
-      if (i < nlocal) fresh = 1;
-    }
-  }
-  kernel_scales();
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::kernel_scales()
-{
-  const double *hv = atom->dvector[ih];
-  const int *type = atom->type;
-  const int nall = atom->nlocal + atom->nghost;
-  const int dim = domain->dimension;
-  for (int i = 0; i < nall; i++) {
-    if (fluid[type[i]]) {
-      const CellKernel::Scale sc = CellKernel::scale(kernel, dim, hv[i]);
-      hscale[i][0] = sc.invh;
-      hscale[i][1] = sc.w;
-      hscale[i][2] = sc.dw;
-      const double range = CellKernel::support(kernel) * (1.0 + HMARGIN) * hv[i];
-      hscale[i][3] = range * range;
-    } else {
-      hscale[i][0] = hscale[i][1] = hscale[i][2] = hscale[i][3] = 0.0;
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   stop when an atom's h is beyond what the neighbour cutoff allows
-------------------------------------------------------------------------- */
-
-void PairCellSPH::too_long(int i) const
-{
-  const int t = atom->type[i];
-  const double hi = atom->dvector[ih][i];
-  error->one(FLERR,
-             "Pair cell/sph: atom {} (cell {}) needs h = {:.4g} m = {:.3g} x the h of pair_coeff "
-             "{} {} on step {}, beyond the {:.4g} m ({:.3g} x) that the neighbour cutoff allows: "
-             "split the run (each run measures h again: {} x its largest h) or give pair_style "
-             "cell/sph a cutoff of at least {:.4g} m ({} h)",
-             atom->tag[i], atom->molecule ? atom->molecule[i] : 0, hi, hi / h[t][t], t, t,
-             update->ntimestep, hcap[t], hcap[t] / h[t][t], GROW,
-             1.1 * hi * CellKernel::support(kernel), CellKernel::support(kernel));
-}
-
-/* ----------------------------------------------------------------------
-   h adaptive: Newton iterations on h_i of owned fluid atoms until rho_i h_i^d = eta^d m_i
-   (doc/pair_cell_sph.md, smoothing length), each followed by the sums at the new h
-------------------------------------------------------------------------- */
-
-void PairCellSPH::solve_h()
-{
-  for (int iter = 0;; iter++) {
-    const double change = newton_h();
-    if (change < HTOL) return;
-    hdrift += change;
-    if (iter == HITER)
-      error->all(FLERR,
-                 "Pair cell/sph: h adaptive did not converge in {} Newton iterations on step {}",
-                 HITER, update->ntimestep);
-    commode = COMM_H;
-    CellCompat::forward_comm(comm, this);
-    kernel_scales();
-    density_pass(0);
-  }
-}
-
-/* ----------------------------------------------------------------------
-   one Newton step dh = -h (rho - rho_h) / (d rho Omega), rho_h = eta^d m / h^d, for every owned
-   fluid atom, applied only if some |dh|/h >= HTOL (on any rank); returns that largest |dh|/h
-------------------------------------------------------------------------- */
-
-double PairCellSPH::newton_h()
-{
-  double *hv = atom->dvector[ih];
-  const double *rho = atom->dvector[irho];
-  const double *rmass = atom->rmass;
-  const int *type = atom->type;
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int dim = domain->dimension;
-  const double etad = dim == 2 ? eta * eta : eta * eta * eta;
-  step.resize(inum);
-  double largest = 0.0, all = 0.0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    step[ii] = 0.0;
-    if (!fluid[type[i]]) continue;
-    double gamma = 1.0, dgamma = 0.0;
-    if (walls) {
-      gamma = 1.0 - deficit[i];
-      dgamma = -dhdef[i];
-      if (gamma < gamma_min) gamma = gamma_min, dgamma = 0.0;
-    }
-    const double hi = hv[i];
-    const double hd = dim == 2 ? hi * hi : hi * hi * hi;
-    // rho = S / gamma, drho/dh = S'/gamma - S gamma' / gamma^2 (doc/pair_cell_sph.md)
-    const double r = rho[i] / gamma;
-    const double dr = dsum[i] / gamma - rho[i] * dgamma / (gamma * gamma);
-    // Omega = 1 + h/(d rho) drho/dh; Newton on rho h^d - eta^d m = 0
-    const double omega = 1.0 + hi * dr / (dim * r);
-    if (!(omega > 0.0)) unsolvable(i, omega);
-    double dh = -hi * (r - etad * rmass[i] / hd) / (dim * r * omega);
-    dh = std::max(-0.2 * hi, std::min(0.2 * hi, dh));
-    step[ii] = dh;
-    largest = std::max(largest, fabs(dh) / hi);
-  }
-  MPI_Allreduce(&largest, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  if (all < HTOL) return all;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    if (!fluid[type[i]]) continue;
-    hv[i] += step[ii];
-    // the deficit at the new h: linear in h between exact evaluations
-    if (walls) deficit[i] += dhdef[i] * step[ii];
-    if (hv[i] > hcap[type[i]]) too_long(i);
-  }
-  return all;
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::unsolvable(int i, double omega) const
-{
-  error->one(FLERR,
-             "Pair cell/sph: h adaptive: atom {} (cell {}) at ({:.4g}, {:.4g}, {:.4g}) has Omega "
-             "= 1 + h/(3 rho) drho/dh = {:.4g} <= 0 on step {}: its density falls faster than "
-             "h^-3 as h grows, and rho h^3 = eta^3 m has no unique solution (too few neighbours "
-             "for eta = {})",
-             atom->tag[i], atom->molecule ? atom->molecule[i] : 0, atom->x[i][0], atom->x[i][1],
-             atom->x[i][2], omega, update->ntimestep, eta);
-}
-
-/* ----------------------------------------------------------------------
-   per-atom arrays (owned and ghost) at atom->nmax: the force pass's, and the wall boundary's
+   per-atom arrays (owned and ghost) at atom->nmax: the force pass's, per-atom h's, and the wall
+   boundary's
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::destroy_peratom()
 {
   memory->destroy(prho2);
   memory->destroy(rhoinv);
-  memory->destroy(deficit);
-  memory->destroy(wallload);
-  memory->destroy(deficit0);
-  memory->destroy(xbase);
-  memory->destroy(gradsum);
-  memory->destroy(disp);
-  memory->destroy(jump);
-  memory->destroy(xnear);
-  memory->destroy(slot);
   memory->destroy(hscale);
   memory->destroy(dsum);
-  memory->destroy(dhdef);
-  memory->destroy(dhdef0);
-  memory->destroy(hbase);
+  wall.destroy();
 }
 
 void PairCellSPH::grow_peratom()
@@ -472,24 +216,41 @@ void PairCellSPH::grow_peratom()
   if (hmode != HFIXED) {
     memory->create(hscale, nmax, 4, "pair:hscale");
     memory->create(dsum, nmax, "pair:dsum");
-    if (walls) {
-      memory->create(dhdef, nmax, "pair:dhdef");
-      memory->create(dhdef0, nmax, "pair:dhdef0");
-      memory->create(hbase, nmax, "pair:hbase");
+  }
+  if (walls) wall.grow(nmax, hmode != HFIXED);
+}
+
+/* ----------------------------------------------------------------------
+   the density sums' start: the self term m_i W(0) of the list's atoms, zero on ghost atoms (with
+   newton, they gather the pairs' other halves); per-atom h: dS/dh likewise
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int PERATOM> void PairCellSPH::self_density()
+{
+  double *rho = atom->dvector[irho];
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const double dim = domain->dimension;
+  const double w0 = CellKernel::shape<KERNEL>(0.0);
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  // self term m_i W(0); per-atom h: d(m W(0, h))/dh = -d m W(0, h) / h
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    if (PERATOM) {
+      rho[i] = rmass[i] * w0 * hscale[i][1];
+      dsum[i] = -dim * rho[i] * hscale[i][0];
+    } else {
+      rho[i] = rmass[i] * wself[type[i]];
     }
   }
-  if (!walls) return;
-  memory->create(deficit, nmax, "pair:deficit");
-  memory->create(wallload, nmax, 3, "pair:wallload");
-  tris->grow(nmax);
-  memory->create(deficit0, nmax, "pair:deficit0");
-  memory->create(xbase, nmax, 3, "pair:xbase");
-  memory->create(gradsum, nmax, 3, "pair:gradsum");
-  memory->create(disp, nmax, 3, "pair:disp");
-  memory->create(jump, nmax, "pair:jump");
-  memory->create(xnear, nmax, 3, "pair:xnear");
-  memory->create(slot, nmax, "pair:slot");
-  for (int i = 0; i < nmax; i++) slot[i] = -1;
+  if (force->newton_pair) {
+    const int nall = nlocal + atom->nghost;
+    for (int i = nlocal; i < nall; i++) rho[i] = 0.0;
+    if (PERATOM)
+      for (int i = nlocal; i < nall; i++) dsum[i] = 0.0;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -507,8 +268,6 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const double dim = domain->dimension;
-  const double w0 = CellKernel::shape<KERNEL>(0.0);
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -520,37 +279,8 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     memory->destroy(pairfirst);
     memory->create(pairfirst, maxfirst, "pair:pairfirst");
   }
-
-  // self term m_i W(0); per-atom h: d(m W(0, h))/dh = -d m W(0, h) / h
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    if (PERATOM) {
-      rho[i] = rmass[i] * w0 * hscale[i][1];
-      dsum[i] = -dim * rho[i] * hscale[i][0];
-    } else {
-      rho[i] = rmass[i] * wself[type[i]];
-    }
-  }
-  if (newton_pair) {
-    const int nall = nlocal + atom->nghost;
-    for (int i = nlocal; i < nall; i++) rho[i] = 0.0;
-    if (PERATOM)
-      for (int i = nlocal; i < nall; i++) dsum[i] = 0.0;
-  }
-  if (WALLS && first) {
-    const int nall = nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) wallload[i][0] = wallload[i][1] = wallload[i][2] = 0.0;
-    if (refreshing) {
-      for (int i = 0; i < nall; i++) deficit[i] = 0.0;
-      if (PERATOM)
-        for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
-      terms.clear();
-      termlen.clear();
-      if (rebuilt) touching.clear();
-    } else {
-      linear_deficit();
-    }
-  }
+  self_density<KERNEL, PERATOM>();
+  if (WALLS && first) wall.start_sums(PERATOM);
 
   int npairs = 0;
   for (int ii = 0; ii < inum; ii++) {
@@ -561,8 +291,8 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     const double mi = rmass[i];
     const PairConst *pci = pc[type[i]];
     // with the wall boundary, the fluid pairs of the list (split_list() at reneighbouring)
-    const int *jlist = WALLS ? &fluidj[fluidfirst[ii]] : firstneigh[i];
-    const int jnum = WALLS ? fluidfirst[ii + 1] - fluidfirst[ii] : numneigh[i];
+    const int *jlist = WALLS ? &wall.fluidj[wall.fluidfirst[ii]] : firstneigh[i];
+    const int jnum = WALLS ? wall.fluidfirst[ii + 1] - wall.fluidfirst[ii] : numneigh[i];
     if (npairs + jnum > maxpairs) grow_pairs(npairs + jnum);
     int *pj = pairj;
     double *pdw = pairdw;
@@ -608,24 +338,7 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   }
   pairfirst[inum] = npairs;
 
-  // the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f,
-  // the pairs of each f in a row (split_list)
-  if (WALLS && first && refreshing) {
-    const int npair = static_cast<int>(boundarypairs.size());
-    for (int k = 0; k < npair;) {
-      const int f = boundarypairs[k][0];
-      const int start = static_cast<int>(terms.size());
-      for (; k < npair && boundarypairs[k][0] == f; k++) {
-        const int b = boundarypairs[k][1];
-        const double delx = xbase[f][0] - xbase[b][0];
-        const double dely = xbase[f][1] - xbase[b][1];
-        const double delz = xbase[f][2] - xbase[b][2];
-        const PairConst &p = pc[type[f]][type[b]];
-        if (delx * delx + dely * dely + delz * delz < p.cutsq) boundary_terms<PERATOM>(f, b, p);
-      }
-      for (int t = start; t < static_cast<int>(terms.size()); t++) slot[terms[t].v] = -1;
-    }
-  }
+  if (WALLS && first && wall.refreshing) wall.exact_terms(PERATOM);
 }
 
 /* ----------------------------------------------------------------------
@@ -671,20 +384,10 @@ inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k,
 template <int KERNEL, int VISCOUS> void PairCellSPH::resum_density()
 {
   double *rho = atom->dvector[irho];
-  const double *rmass = atom->rmass;
   const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const double dim = domain->dimension;
-  const double w0 = CellKernel::shape<KERNEL>(0.0);
   const int inum = list->inum;
   const int *ilist = list->ilist;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    rho[i] = rmass[i] * w0 * hscale[i][1];
-    dsum[i] = -dim * rho[i] * hscale[i][0];
-  }
-  if (force->newton_pair)
-    for (int i = nlocal; i < nlocal + atom->nghost; i++) rho[i] = dsum[i] = 0.0;
+  self_density<KERNEL, 1>();
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const PairConst *pci = pc[type[i]];
@@ -711,506 +414,6 @@ void PairCellSPH::grow_pairs(int n)
 }
 
 /* ----------------------------------------------------------------------
-   the terms of fluid atom f with the triangles (a, b, c) kept by wall atom b of its own cell:
-   kernel deficit and its gradient, summed per vertex into terms (slot[v]: v's term of f, with
-   |x_v - x_f| in termlen), and at a neighbour build the contact candidates
-------------------------------------------------------------------------- */
-
-template <int PERATOM> void PairCellSPH::boundary_terms(int f, int b, const PairConst &p)
-{
-  double **x = xbase;
-  const double *xf = x[f];
-  const double support = CellKernel::support(kernel);
-  const double touch = p.reach + neighbor->skin;
-  const double edgemax = tris->edge_max();
-  for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
-    const int a = tris->a(t), c = tris->c(t);
-    // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
-    if (a < 0 || c < 0) continue;
-    const double ra[3] = {x[a][0] - xf[0], x[a][1] - xf[1], x[a][2] - xf[2]};
-    const double rb[3] = {x[b][0] - xf[0], x[b][1] - xf[1], x[b][2] - xf[2]};
-    const double rc[3] = {x[c][0] - xf[0], x[c][1] - xf[1], x[c][2] - xf[2]};
-    const double g[3] = {(ra[0] + rb[0] + rc[0]) / 3.0, (ra[1] + rb[1] + rc[1]) / 3.0,
-                         (ra[2] + rb[2] + rc[2]) / 3.0};
-    const double gl = sqrt(CellTriangle::dot(g, g));
-    const double invh = PERATOM ? hscale[f][0] : p.scale.invh;
-    const double q = gl * invh;
-    if (q >= support) continue;
-    const int vert[3] = {a, b, c};
-    const double *rv[3] = {ra, rb, rc};
-    int s[3];
-    double len[3];
-    for (int v = 0; v < 3; v++) {
-      if (slot[vert[v]] < 0) {
-        slot[vert[v]] = static_cast<int>(terms.size());
-        terms.push_back(Term{f, vert[v], {0.0, 0.0, 0.0}});
-        termlen.push_back(sqrt(CellTriangle::dot(rv[v], rv[v])));
-      }
-      s[v] = slot[vert[v]];
-      len[v] = termlen[s[v]];
-    }
-    double ph, dph;
-    phi_beyond(q, ph, dph);
-    // D_T = Phi(|g|/h) Omega_T / (4 pi), Omega_T the solid angle of T seen from f (exact: a point
-    // formula (g . S_T)/|g|^3 would err by 1e-3 in gamma, 2 % in pressure); 1 - gamma_f = sum_T D_T
-    double solid, dom[3][3];
-    CellTriangle::solid_angle(ra, rb, rc, len, solid, dom);
-    deficit[f] += ph * solid / (4.0 * M_PI);
-    // per-atom h: dD_T/dh = -Phi'(q) q Omega_T / (4 pi h)
-    if (PERATOM) dhdef[f] -= dph * q * invh * solid / (4.0 * M_PI);
-    // dD_T/dx_v = Phi'(q) Omega g / (12 pi h |g|) + Phi / (4 pi) dOmega/dx_v (d|g|/dx_v = g / 3|g|),
-    // with Phi' the derivative of the interpolated Phi, so that the force is -grad of this D_T
-    const double cg = dph * solid * invh / (12.0 * M_PI * gl);
-    const double co = ph / (4.0 * M_PI);
-    for (int v = 0; v < 3; v++)
-      for (int d = 0; d < 3; d++) terms[s[v]].grad[d] += cg * g[d] + co * dom[v][d];
-    // contact candidates until the next neighbour build: every atom moves less than skin/2
-    if (rebuilt && gl < touch + 2.0 / 3.0 * edgemax) {
-      const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
-      const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
-      if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   at reneighbouring: the neighbour list split into the fluid pairs of the SPH sums and the
-   fluid-wall pairs of the wall boundary (same cell), so that the steps between exact evaluations
-   of the boundary do not visit the boundary pairs. With per-atom h the fluid pairs are only those
-   within margin of the support of (1 + HGROW) x the larger h at the split: the list reaches GROW x
-   the largest h of the run's start, most of it beyond every support once a cell has dried
-   (margin = skin at a build; 2 skin on a later split, since both atoms may have moved skin/2 from
-   the build positions before and move as much again after). Dropped pairs would be skipped by
-   the density pass anyway, so the sums are the same.
-------------------------------------------------------------------------- */
-
-void PairCellSPH::split_list(double margin)
-{
-  const tagint *molecule = atom->molecule;
-  const int *type = atom->type;
-  const int inum = list->inum;
-  const int peratom = hmode != HFIXED;
-  double **x = atom->x;
-  const double *hv = peratom ? atom->dvector[ih] : nullptr;
-  const double reach = CellKernel::support(kernel) * (1.0 + HMARGIN) * (1.0 + HGROW);
-  if (peratom) {
-    const int nall = atom->nlocal + atom->nghost;
-    hsplit.resize(nall);
-    for (int i = 0; i < nall; i++) hsplit[i] = fluid[type[i]] ? hv[i] : 0.0;
-  }
-  fluidfirst.assign(inum + 1, 0);
-  fluidj.clear();
-  boundarypairs.clear();
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    fluidfirst[ii] = static_cast<int>(fluidj.size());
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const PairConst &p = pc[type[i]][type[j]];
-      // each cell's fluid is bounded by its own wall: no pair with another cell's fluid
-      // (doc/pair_cell_sph.md, Wall boundary)
-      if (molecule[i] != molecule[j]) continue;
-      if (!p.boundary) {
-        if (peratom && fluid[type[i]] && fluid[type[j]]) {
-          // within margin of the support of (1 + HGROW) x the larger h (the comment above)
-          const double r = reach * std::max(hv[i], hv[j]) + margin;
-          const double delx = x[i][0] - x[j][0];
-          const double dely = x[i][1] - x[j][1];
-          const double delz = x[i][2] - x[j][2];
-          if (delx * delx + dely * dely + delz * delz >= r * r) continue;
-        }
-        fluidj.push_back(j);
-      } else
-        boundarypairs.push_back(fluid[type[i]] ? std::array<int, 2>{i, j}
-                                               : std::array<int, 2>{j, i});
-    }
-  }
-  fluidfirst[inum] = static_cast<int>(fluidj.size());
-  // the boundary pairs of each fluid atom in a row, in list order (a stable counting sort), so
-  // that its terms are summed per vertex as they come
-  const int nall = atom->nlocal + atom->nghost;
-  std::vector<int> first(nall + 1, 0);
-  for (const auto &fb : boundarypairs) first[fb[0] + 1]++;
-  for (int i = 0; i < nall; i++) first[i + 1] += first[i];
-  std::vector<std::array<int, 2>> sorted(boundarypairs.size());
-  for (const auto &fb : boundarypairs) sorted[first[fb[0]]++] = fb;
-  boundarypairs.swap(sorted);
-}
-
-/* ----------------------------------------------------------------------
-   per-atom h: an owned or ghost fluid atom whose h grew beyond (1 + HGROW) x its h at the last
-   split_list(), so that the split may lack pairs of its support (a local decision: the sums are
-   the same with or without a new split)
-------------------------------------------------------------------------- */
-
-bool PairCellSPH::outgrown() const
-{
-  const double *hv = atom->dvector[ih];
-  const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(hsplit.size()) < nall) return true;
-  for (int i = 0; i < nall; i++)
-    if (hv[i] > (1.0 + HGROW) * hsplit[i]) return true;
-  return false;
-}
-
-/* ----------------------------------------------------------------------
-   the positions of an exact evaluation, the base of the linearisation until the next: the atoms'
-   own (ahead = 0, and on a neighbour build, where the contact candidates are searched), or
-   half an interval ahead, x + v dt every / 2 (each atom's step at most skin/4), so that the
-   linearisation's error, quadratic in the displacement from the base, is the same at both ends
-   of the interval and cancels in the energy at the next exact evaluation (doc/pair_cell_sph.md)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::base_positions(int ahead)
-{
-  double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  // the linearisation from the last base at these positions, against the next (next_interval)
-  if (measuring) {
-    linear_deficit();
-    for (int i = 0; i < nall; i++) jump[i] = deficit[i];
-  }
-  predicted = ahead;
-  if (!predicted) {
-    for (int i = 0; i < nall; i++)
-      for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
-    return;
-  }
-  double **v = atom->v;
-  const double half = 0.5 * every * update->dt;
-  const double most = 0.25 * neighbor->skin;
-  for (int i = 0; i < nlocal; i++) {
-    const double step2 = half * half * (v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-    const double k = step2 > most * most ? most / sqrt(step2) : 1.0;
-    for (int d = 0; d < 3; d++) disp[i][d] = k * half * v[i][d];
-  }
-  commode = COMM_AHEAD;
-  CellCompat::forward_comm(comm, this);
-  for (int i = 0; i < nall; i++)
-    for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d] + disp[i][d];
-}
-
-/* ----------------------------------------------------------------------
-   the interval to the exact evaluation after the next, from the jump of 1 - gamma of every fluid
-   atom at this one (the new linearisation against the last, at the same positions: the jump of
-   the energy): doubled while the largest jump is below JUMP_TOL / 4, halved above JUMP_TOL,
-   between REFRESH and REFRESH_MAX steps
-------------------------------------------------------------------------- */
-
-void PairCellSPH::next_interval()
-{
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) jump[i] = deficit[i] - jump[i];
-  if (force->newton_pair) {
-    commode = COMM_JUMP;
-    CellCompat::reverse_comm(comm, this);
-  }
-  const int *type = atom->type;
-  double most = 0.0, all = 0.0;
-  for (int i = 0; i < nlocal; i++)
-    if (fluid[type[i]]) most = std::max(most, fabs(jump[i]));
-  MPI_Allreduce(&most, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  lastjump = all;
-  if (all > JUMP_TOL)
-    pending = std::max(every / 2, REFRESH);
-  else if (all < 0.25 * JUMP_TOL)
-    pending = std::min(every * 2, REFRESH_MAX);
-  else
-    pending = every;
-}
-
-/* ----------------------------------------------------------------------
-   after an exact evaluation: the terms (one per fluid atom and vertex, grad_v D_f summed over
-   the vertex's triangles) indexed per fluid atom; the deficits kept with the base positions
-   (base_positions) as the base of the linearisation
-------------------------------------------------------------------------- */
-
-void PairCellSPH::keep_base()
-{
-  const int nall = atom->nlocal + atom->nghost;
-  // the terms of fluid atom f are terms[termfirst[f]] .. terms[termfirst[f + 1] - 1], and
-  // gradsum[f] = sum_v grad_v D_f = -grad_f D_f
-  termfirst.assign(nall + 1, 0);
-  for (const Term &tm : terms) termfirst[tm.f + 1]++;
-  for (int i = 0; i < nall; i++) termfirst[i + 1] += termfirst[i];
-  for (int i = 0; i < nall; i++) {
-    deficit0[i] = deficit[i];
-    for (int d = 0; d < 3; d++) gradsum[i][d] = 0.0;
-  }
-  for (const Term &tm : terms)
-    for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
-  if (hmode != HFIXED) {
-    const double *hv = atom->dvector[ih];
-    for (int i = 0; i < nall; i++) {
-      dhdef0[i] = dhdef[i];
-      hbase[i] = hv[i];
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   between exact evaluations: 1 - gamma_f = D_f(base) + sum_v grad_v D_f . (dx_v - dx_f)
-   (+ dD_f/dh (h_f - h_f(base)) with per-atom h), dx the displacement since the base, summed as
-   D_f(base) - gradsum_f . dx_f + sum_v grad_v D_f . dx_v (grad_f D_f = -gradsum_f)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::linear_deficit()
-{
-  double **x = atom->x;
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++)
-    for (int d = 0; d < 3; d++) disp[i][d] = x[i][d] - xbase[i][d];
-  const double *hv = hmode != HFIXED ? atom->dvector[ih] : nullptr;
-  for (int i = 0; i < nall; i++) {
-    double sum = 0.0;
-    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
-      const double *dv = disp[terms[k].v];
-      sum += terms[k].grad[0] * dv[0] + terms[k].grad[1] * dv[1] + terms[k].grad[2] * dv[2];
-    }
-    deficit[i] = deficit0[i] -
-        (gradsum[i][0] * disp[i][0] + gradsum[i][1] * disp[i][1] + gradsum[i][2] * disp[i][2]) +
-        sum;
-    if (hv) {
-      dhdef[i] = dhdef0[i];
-      deficit[i] += dhdef0[i] * (hv[i] - hbase[i]);
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   the wall term of each boundary pair, F_f = 2 m_f (P_f / rho_f) grad_f gamma_f (the fluid's
-   own pressure mirrored across the wall), its reaction on the wall atom, tallied as wall load
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> void PairCellSPH::wall_forces()
-{
-  double **x = atom->x;
-  double **f = atom->f;
-  const double *rmass = atom->rmass;
-  const double *rho = atom->dvector[irho];
-
-  // the forces on the wall atoms go into wallload (zero before, from sum_density), added to f
-  // at the end
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) {
-    // F = -grad E of E = sum m e(rho), rho = sum m W / gamma, 1 - gamma = D: -C_f grad_v D_f on
-    // vertex v and its opposite on the fluid atom, C_f = m P / (rho gamma) (0 at the gamma floor)
-    if (termfirst[i] == termfirst[i + 1]) continue;
-    const double c = 1.0 - deficit[i] < gamma_min ? 0.0 : rmass[i] * prho2[i] * rho[i];
-    if (c == 0.0) continue;
-    f[i][0] += c * gradsum[i][0];
-    f[i][1] += c * gradsum[i][1];
-    f[i][2] += c * gradsum[i][2];
-    for (int k = termfirst[i]; k < termfirst[i + 1]; k++) {
-      const Term &tm = terms[k];
-      const int v = tm.v;
-      const double fx = c * tm.grad[0], fy = c * tm.grad[1], fz = c * tm.grad[2];
-      wallload[v][0] -= fx;
-      wallload[v][1] -= fy;
-      wallload[v][2] -= fz;
-      if (EVFLAG)
-        ev_tally_xyz(i, v, atom->nlocal, 1, 0.0, 0.0, fx, fy, fz, x[i][0] - x[v][0],
-                     x[i][1] - x[v][1], x[i][2] - x[v][2]);
-    }
-  }
-
-  // contacts with the wall surface: the candidates of the neighbour build within reach + margin
-  // (near), taken again from all of them once an atom has moved margin / 2 since
-  const double margin = NEAR * neighbor->skin;
-  if (rebuilt || moved_since_near(0.5 * margin)) {
-    near.clear();
-    for (const auto &t : touching)
-      if (contact<EVFLAG>(t[0], t[1], t[2], t[3], margin)) near.push_back(t);
-    for (int i = 0; i < nall; i++)
-      for (int d = 0; d < 3; d++) xnear[i][d] = x[i][d];
-  } else {
-    for (const auto &t : near) contact<EVFLAG>(t[0], t[1], t[2], t[3], margin);
-  }
-  if (background != 0.0) outside_pressure<EVFLAG>();
-  for (int i = 0; i < nall; i++)
-    for (int d = 0; d < 3; d++) f[i][d] += wallload[i][d];
-}
-
-/* ----------------------------------------------------------------------
-   background pressure P_b from outside on every wall triangle kept by an owned wall atom b:
-   -P_b S_T / 3 on each vertex (S_T the outward area vector), energy P_b V_T,
-   V_T = x_b . S_T / 3 with x_b unwrapped (the closed wall's volume by the divergence theorem),
-   tallied as wall load so that the load is the fluid's P alone (doc/pair_cell_sph.md, eq. B2)
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> void PairCellSPH::outside_pressure()
-{
-  double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const double p3 = background / 3.0;
-  for (int b = 0; b < nlocal; b++) {
-    const int t0 = tris->first(b), nt = tris->count(b);
-    for (int t = t0; t < t0 + nt; t++) {
-      const int a = tris->a(t), c = tris->c(t);
-      if (a < 0 || c < 0)
-        error->one(FLERR,
-                   "Pair cell/sph: background pressure: a wall triangle of atom {} (cell {}) has "
-                   "a vertex on no rank on step {} (ghost cutoff too short)",
-                   atom->tag[b], atom->molecule[b], update->ntimestep);
-      // S_T = (x_b - x_a) x (x_c - x_a) / 2, outward; -P_b dV/dx_k = -P_b S_T / 3 (eq. B2)
-      double ab[3], ac[3], fn[3];
-      for (int d = 0; d < 3; d++) {
-        ab[d] = x[b][d] - x[a][d];
-        ac[d] = x[c][d] - x[a][d];
-      }
-      fn[0] = -0.5 * p3 * (ab[1] * ac[2] - ab[2] * ac[1]);
-      fn[1] = -0.5 * p3 * (ab[2] * ac[0] - ab[0] * ac[2]);
-      fn[2] = -0.5 * p3 * (ab[0] * ac[1] - ab[1] * ac[0]);
-      const int v[3] = {a, b, c};
-      for (int k = 0; k < 3; k++)
-        for (int d = 0; d < 3; d++) wallload[v[k]][d] += fn[d];
-      if (!EVFLAG) continue;
-      if (eflag_either) {
-        // P_b V_T = -x_b . F_k (F_k = -P_b S_T / 3), x_b unwrapped
-        double xb[3];
-        domain->unmap(x[b], atom->image[b], xb);
-        const double e = -(xb[0] * fn[0] + xb[1] * fn[1] + xb[2] * fn[2]);
-        if (eflag_global) eng_vdwl += e;
-        if (eflag_atom) eatom[b] += e;
-      }
-      if (vflag_either) {
-        // virial sum_k x_k F_k (as F dot r over owned and ghost atoms)
-        for (int k = 0; k < 3; k++) {
-          const double *xk = x[v[k]];
-          const double w[6] = {xk[0] * fn[0], xk[1] * fn[1], xk[2] * fn[2],
-                               xk[0] * fn[1], xk[0] * fn[2], xk[1] * fn[2]};
-          for (int m = 0; m < 6; m++) {
-            if (vflag_global) virial[m] += w[m];
-            if (vflag_atom) vatom[v[k]][m] += w[m];
-          }
-        }
-      }
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   contact of fluid atom f with triangle (a, b, c) of its own cell's wall: F = F_c (1 - d/delta)^2 e
-   from the closest point p at distance d < delta, e = (x_f - p)/d, on the fluid atom and
-   -lambda_v F on vertex v (newton on, the vertices' share as wall load), energy
-   F_c delta (1 - d/delta)^3 / 3, so that F = -grad E for the atom and the vertices; true if
-   d < delta + margin
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> bool PairCellSPH::contact(int f, int a, int b, int c, double margin)
-{
-  const PairConst &p = pc[atom->type[f]][atom->type[b]];
-  double **x = atom->x;
-  const CellTriangle::Foot ft = CellTriangle::closest(x[f], x[a], x[b], x[c]);
-  const double e[3] = {x[f][0] - ft.p[0], x[f][1] - ft.p[1], x[f][2] - ft.p[2]};
-  const double dist = sqrt(CellTriangle::dot(e, e));
-  if (dist >= p.reach) return dist < p.reach + margin;
-  if (dist == 0.0)
-    error->one(FLERR,
-               "Pair cell/sph: fluid atom {} (cell {}) lies on its wall on step {}: the contact "
-               "force has no direction; the run went unstable",
-               atom->tag[f], atom->molecule[f], update->ntimestep);
-  const double s = 1.0 - dist / p.reach;
-  const double fd = p.fcontact * s * s / dist;
-  // F = F_c (1 - d/delta)^2 (x_f - p) / d
-  double force[3] = {fd * e[0], fd * e[1], fd * e[2]};
-  const int v[3] = {a, b, c};
-  double fv[3][3];
-  double **fatom = atom->f;
-  for (int d = 0; d < 3; d++) {
-    fatom[f][d] += force[d];
-    for (int k = 0; k < 3; k++) {
-      fv[k][d] = -ft.l[k] * force[d];
-      wallload[v[k]][d] += fv[k][d];
-    }
-  }
-  if (!EVFLAG) return true;
-  const double energy = p.fcontact * p.reach * s * s * s / 3.0;
-  if (eflag_global) eng_vdwl += energy;
-  if (eflag_atom) eatom[f] += energy;
-  if (vflag_either) {
-    // virial about vertex c: sum over f, a, b of (x - x_c) F
-    double dfc[3], dac[3], dbc[3];
-    for (int d = 0; d < 3; d++) {
-      dfc[d] = x[f][d] - x[c][d];
-      dac[d] = x[a][d] - x[c][d];
-      dbc[d] = x[b][d] - x[c][d];
-    }
-    v_tally4(f, a, b, c, force, fv[0], fv[1], dfc, dac, dbc);
-  }
-  return true;
-}
-
-/* ----------------------------------------------------------------------
-   true if an owned or ghost atom has moved more than dmax since the near contact candidates were
-   taken (a local decision: the contacts are the same with either list)
-------------------------------------------------------------------------- */
-
-bool PairCellSPH::moved_since_near(double dmax) const
-{
-  double **x = atom->x;
-  const int nall = atom->nlocal + atom->nghost;
-  const double dmax2 = dmax * dmax;
-  for (int i = 0; i < nall; i++) {
-    const double dx = x[i][0] - xnear[i][0];
-    const double dy = x[i][1] - xnear[i][1];
-    const double dz = x[i][2] - xnear[i][2];
-    if (dx * dx + dy * dy + dz * dz > dmax2) return true;
-  }
-  return false;
-}
-
-/* ----------------------------------------------------------------------
-   Phi(q), the fraction of the 3-D kernel beyond q = r/h, and dPhi/dq = -4 pi q^2 W(q) at h = 1,
-   tabulated from the kernel (3-point Gauss-Legendre per step, exact for the kernels' pieces,
-   which end on table points) for cubic Hermite interpolation
-------------------------------------------------------------------------- */
-
-void PairCellSPH::tabulate_phi()
-{
-  const double support = CellKernel::support(kernel);
-  const int n = 512 * static_cast<int>(support);
-  const CellKernel::Scale unit = CellKernel::scale(kernel, 3, 1.0);
-  const auto shell = [&](double q) { return 4.0 * M_PI * q * q * CellKernel::W(kernel, unit, q); };
-  static const double GX = 0.7745966692414834, GW0 = 8.0 / 9.0, GW1 = 5.0 / 9.0;
-  phidq = support / n;
-  phi.assign(n + 1, 0.0);
-  dphi.assign(n + 1, 0.0);
-  for (int k = n - 1; k >= 0; k--) {
-    const double mid = (k + 0.5) * phidq, half = 0.5 * phidq;
-    const double sum = GW0 * shell(mid) + GW1 * (shell(mid - half * GX) + shell(mid + half * GX));
-    phi[k] = phi[k + 1] + half * sum;
-    dphi[k] = -shell(k * phidq);
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::phi_beyond(double q, double &value, double &slope) const
-{
-  const int k = static_cast<int>(q / phidq);
-  if (k >= static_cast<int>(phi.size()) - 1) {
-    value = slope = 0.0;
-    return;
-  }
-  const double t = q / phidq - k;
-  const double t2 = t * t, t3 = t2 * t;
-  // cubic Hermite between the table points k and k + 1, and its derivative in q
-  value = (2.0 * t3 - 3.0 * t2 + 1.0) * phi[k] + (t3 - 2.0 * t2 + t) * phidq * dphi[k] +
-      (3.0 * t2 - 2.0 * t3) * phi[k + 1] + (t3 - t2) * phidq * dphi[k + 1];
-  slope = (6.0 * t2 - 6.0 * t) * (phi[k] - phi[k + 1]) / phidq +
-      (3.0 * t2 - 4.0 * t + 1.0) * dphi[k] + (3.0 * t2 - 2.0 * t) * dphi[k + 1];
-}
-
-/* ----------------------------------------------------------------------
-   pressure of owned fluid atoms from their density; P/rho^2 and 1/rho for the force pass;
-   the equation-of-state energy m_i e(rho_i), e' = P/rho^2, whose gradient is the pressure force
-------------------------------------------------------------------------- */
-
-/* ----------------------------------------------------------------------
    stop a run whose density left (0, 2 rho0] (a weakly compressible fluid never gets there unless
    the run went unstable), saying where and the likely cause
 ------------------------------------------------------------------------- */
@@ -1229,7 +432,10 @@ void PairCellSPH::unstable(int i) const
              0.25 * (hmode == HFIXED ? h[t][t] : atom->dvector[ih][i]) / c, c);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   pressure of owned fluid atoms from their density; P/rho^2 and 1/rho for the force pass;
+   the equation-of-state energy m_i e(rho_i), e' = P/rho^2, whose gradient is the pressure force
+------------------------------------------------------------------------- */
 
 void PairCellSPH::apply_eos()
 {
@@ -1246,12 +452,12 @@ void PairCellSPH::apply_eos()
     const int t = type[i];
     if (!fluid[t]) continue;
     // rho_i = sum_j m_j W_ij / gamma_i with the wall boundary: the kernel completed by the cell
-    const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    const double gamma = walls ? std::max(1.0 - wall.deficit[i], wall.GAMMA_MIN) : 1.0;
     // h adaptive: Omega = 1 + h/(d rho) drho/dh, drho/dh = S'/gamma + S D'/gamma^2 (above the
     // floor); it divides the atom's density gradient (doc/pair_cell_sph.md); 1 at fixed h
     double omega = 1.0;
     if (hmode == HADAPTIVE) {
-      const double dgamma = walls && 1.0 - deficit[i] >= gamma_min ? -dhdef[i] : 0.0;
+      const double dgamma = walls && 1.0 - wall.deficit[i] >= wall.GAMMA_MIN ? -wall.dhdef[i] : 0.0;
       const double dr = dsum[i] / gamma - rho[i] * dgamma / (gamma * gamma);
       omega = 1.0 + atom->dvector[ih][i] * dr * gamma / (domain->dimension * rho[i]);
     }
@@ -1294,7 +500,7 @@ void PairCellSPH::apply_eos()
     const int i = ilist[ii];
     const int t = type[i];
     if (!fluid[t]) continue;
-    const double gamma = walls ? std::max(1.0 - deficit[i], gamma_min) : 1.0;
+    const double gamma = walls ? std::max(1.0 - wall.deficit[i], wall.GAMMA_MIN) : 1.0;
     const double omega = hmode == HADAPTIVE ? atom->dvector[iomega][i] : 1.0;
     // P_b + P in the forces; e gains P_b (1/rho0 - 1/rho) (doc/pair_cell_sph.md, eq. B1)
     prho2[i] += background * rhoinv[i] * rhoinv[i] / (gamma * omega);
@@ -1368,737 +574,6 @@ template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
   }
 }
 
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::allocate()
-{
-  allocated = 1;
-  const int n = atom->ntypes + 1;
-  memory->create(setflag, n, n, "pair:setflag");
-  memory->create(cutsq, n, n, "pair:cutsq");
-  memory->create(rho0, n, n, "pair:rho0");
-  memory->create(bulk, n, n, "pair:bulk");
-  memory->create(mu, n, n, "pair:mu");
-  memory->create(h, n, n, "pair:h");
-  memory->create(pc, n, n, "pair:pc");
-  memory->create(boundary, n, n, "pair:boundary");
-  memory->create(wself, n, "pair:wself");
-  memory->create(invrho0, n, "pair:invrho0");
-  memory->create(fluid, n, "pair:fluid");
-  memory->create(hcap, n, "pair:hcap");
-  for (int i = 0; i < n; i++) {
-    for (int j = 0; j < n; j++) {
-      setflag[i][j] = 0;
-      rho0[i][j] = bulk[i][j] = mu[i][j] = h[i][j] = 0.0;
-      boundary[i][j] = 0;
-      pc[i][j] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
-    }
-    wself[i] = invrho0[i] = hcap[i] = 0.0;
-    fluid[i] = 0;
-  }
-}
-
-/* ----------------------------------------------------------------------
-   pair_style cell/sph [cutoff] [kernel wendland|cubic|quintic|lucy] [h fixed|adaptive <eta>]
-                       [temp <T>] [background <P_b>|auto <P_min>]
-------------------------------------------------------------------------- */
-
-// the range of the Vogel correlation of the viscosity of water
-static bool vogel_range(double t)
-{
-  return t >= CellWater::VOGEL_TMIN && t <= CellWater::VOGEL_TMAX;
-}
-
-// keywords of pair_style cell/sph that no scene used, and what replaces each
-static const char *const REMOVED[][2] = {
-    {"tensile",
-     "the wall boundary with 'background auto' (or a background P_b) holds fluid in tension"},
-    {"shift", "the wall boundary with 'background auto' makes the fluid at rest uniform"},
-    {"Tref", "mu of pair_coeff is the viscosity at 25 C; 'temp T' scales it as water's"},
-    {"grow",
-     "h may grow 1.5 x its largest value at a run's start; split a longer run or give a cutoff"},
-    {"eos", "the equation of state is linear, P = K (rho/rho0 - 1)"}};
-
-void PairCellSPH::settings(int narg, char **arg)
-{
-  int iarg = 0;
-  cut_global = 0.0;
-  kernel = CellKernel::WENDLAND;
-  hmode = HFIXED;
-  eta = 0.0;
-  temp_set = 0;
-  temp = CellQuantity();
-  muscale = 1.0;
-  background_in = CellQuantity();
-  background = 0.0;
-  background_set = 0;
-  background_auto = 0;
-  background_min = 0.0;
-  // a pair_style command again reuses this instance: the pair arrays regrow for the new settings
-  // (h mode)
-  maxpairs = 0;
-  if (narg > 0 && utils::is_double(arg[0])) {
-    cut_global = utils::numeric(FLERR, arg[0], false, lmp);
-    if (cut_global <= 0.0)
-      error->all(FLERR, "Pair style cell/sph: cutoff = {} must be > 0", cut_global);
-    iarg = 1;
-  }
-  while (iarg < narg) {
-    for (const auto &gone : REMOVED)
-      if (strcmp(arg[iarg], gone[0]) == 0)
-        error->all(FLERR, "Pair style cell/sph: keyword '{}' was removed: {}", gone[0], gone[1]);
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Pair style cell/sph: keyword '{}' needs a value", arg[iarg]);
-    const std::string value = arg[iarg + 1];
-    if (strcmp(arg[iarg], "h") == 0) {
-      if (value == HMODE_NAMES[HFIXED]) {
-        hmode = HFIXED;
-      } else if (value == HMODE_NAMES[HADAPTIVE]) {
-        hmode = HADAPTIVE;
-        if (iarg + 2 >= narg)
-          error->all(FLERR,
-                     "Pair style cell/sph: 'h adaptive' needs a value eta (h = eta "
-                     "(m/rho)^(1/3))");
-        eta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-        if (eta <= 0.0)
-          error->all(FLERR, "Pair style cell/sph: h adaptive eta = {} must be > 0", eta);
-        iarg++;
-      } else if (value == HMODE_NAMES[1]) {
-        error->all(FLERR,
-                   "Pair style cell/sph: 'h mass' was removed: 'h adaptive <eta>' (h from each "
-                   "atom's mass and density) or h fixed");
-      } else {
-        error->all(FLERR,
-                   "Pair style cell/sph: unknown h mode '{}' (expected fixed or adaptive <eta>)",
-                   value);
-      }
-    } else if (strcmp(arg[iarg], "temp") == 0) {
-      temp_set = 1;
-      temp = CellQuantity::parse(lmp, arg[iarg + 1], "Pair style cell/sph: temp");
-      if (!temp.is_variable()) {
-        if (!vogel_range(temp.value))
-          error->all(FLERR,
-                     "Pair style cell/sph: temperature T = {} K is outside {}-{} K (0-370 C), the "
-                     "range of the Vogel correlation of the viscosity of water",
-                     temp.value, CellWater::VOGEL_TMIN, CellWater::VOGEL_TMAX);
-      }
-    } else if (strcmp(arg[iarg], "background") == 0) {
-      iarg += parse_background(narg - iarg - 1, &arg[iarg + 1]);
-    } else if (strcmp(arg[iarg], "kernel") == 0) {
-      kernel = CellKernel::parse(value);
-      if (kernel < 0)
-        error->all(FLERR,
-                   "Pair style cell/sph: unknown kernel '{}' (expected wendland, cubic, quintic "
-                   "or lucy)",
-                   value);
-    } else {
-      error->all(FLERR,
-                 "Pair style cell/sph: unknown keyword '{}' (expected a cutoff, 'kernel', 'h', "
-                 "'temp' or 'background')",
-                 arg[iarg]);
-    }
-    iarg += 2;
-  }
-}
-
-/* ----------------------------------------------------------------------
-   background <P_b> | auto <P_min> (arg: the values after the keyword, narg >= 1); returns the
-   number of values beyond the first
-------------------------------------------------------------------------- */
-
-int PairCellSPH::parse_background(int narg, char **arg)
-{
-  if (strcmp(arg[0], "auto") != 0) {
-    background_in = CellQuantity::parse(lmp, arg[0], "Pair style cell/sph: background");
-    background = background_in.value;
-    if (!std::isfinite(background))
-      error->all(FLERR, "Pair style cell/sph: background P_b = {} Pa is not a number", background);
-    if (!background_in.is_variable())
-      CellLimits::within(error, "Pair style cell/sph: background P_b", background,
-                         -CellLimits::PRESSURE_MAX, CellLimits::PRESSURE_MAX, "Pa", false);
-    return 0;
-  }
-  if (narg < 2)
-    error->all(FLERR, "Pair style cell/sph: 'background auto' needs a value P_min (Pa)");
-  background_auto = 1;
-  background_min = utils::numeric(FLERR, arg[1], false, lmp);
-  if (!(background_min >= 0.0))
-    error->all(FLERR, "Pair style cell/sph: background auto P_min = {} Pa must be >= 0",
-               background_min);
-  CellLimits::within(error, "Pair style cell/sph: background auto P_min", background_min, 0.0,
-                     CellLimits::PRESSURE_MAX, "Pa", false);
-  if (narg > 2 && strcmp(arg[2], "lag") == 0)
-    error->all(FLERR,
-               "Pair style cell/sph: 'background auto ... lag' was removed: P_b follows its "
-               "target over {} steps",
-               AUTO_LAG);
-  return 1;
-}
-
-/* ----------------------------------------------------------------------
-   pair_coeff I J rho0 K mu h
-   pair_coeff I J file <parameter file>    (keys sph_rho0, sph_K, sph_mu, sph_h)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::coeff(int narg, char **arg)
-{
-  if (narg < 2) error->all(FLERR, "Incorrect args for pair_coeff cell/sph");
-  if (!allocated) allocate();
-  int ilo, ihi, jlo, jhi;
-  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-
-  double rho0_one = 0.0, bulk_one = 0.0, mu_one = 0.0, h_one = 0.0;
-  const int wall = narg >= 3 && strcmp(arg[2], "wall") == 0;
-  if (wall) {
-    if (ilo <= jhi && jlo <= ihi)
-      error->all(FLERR,
-                 "Pair_coeff cell/sph: {} {} wall: a type cannot be the wall of itself (give the "
-                 "fluid type and the wall type)",
-                 arg[0], arg[1]);
-    // pair_coeff <fluid> <wall> wall
-    if (narg > 3 && strcmp(arg[3], "adhesion") == 0)
-      error->all(FLERR,
-                 "Pair_coeff cell/sph: 'wall adhesion' was removed: the wall boundary with "
-                 "'background auto' (or a background P_b) holds the fluid on the wall");
-    if (narg > 3)
-      error->all(FLERR,
-                 "Pair_coeff cell/sph: expected 'pair_coeff <fluid> <wall> wall', got {} args "
-                 "after wall",
-                 narg - 3);
-  } else if (narg == 4 && strcmp(arg[2], "file") == 0) {
-    CellParams params(lmp, arg[3], "pair_coeff cell/sph");
-    rho0_one = params.positive("sph_rho0", CellLimits::SPH_RHO0_MAX, "kg/m^3");
-    bulk_one = params.positive("sph_K", CellLimits::SPH_K_MAX, "Pa");
-    mu_one = params.nonnegative("sph_mu", CellLimits::SPH_MU_MAX, "Pa s");
-    h_one = params.positive("sph_h", CellLimits::SPH_H_MAX, "m");
-    if (params.has("sph_kernel") && params.word("sph_kernel") != CellKernel::NAMES[kernel])
-      error->all(FLERR,
-                 "Pair_coeff cell/sph: {} sets sph_kernel = {} but pair_style cell/sph uses "
-                 "kernel {} (the kernel is a pair_style keyword)",
-                 arg[3], params.word("sph_kernel"), CellKernel::NAMES[kernel]);
-  } else {
-    if (narg != 6)
-      error->all(FLERR,
-                 "Incorrect args for pair_coeff cell/sph: expected 'pair_coeff <I> <J> <rho0> "
-                 "<K> <mu> <h>', 'pair_coeff <I> <J> file <parameter file>' or 'pair_coeff "
-                 "<fluid> <wall> wall', got {} args",
-                 narg);
-    rho0_one = utils::numeric(FLERR, arg[2], false, lmp);
-    bulk_one = utils::numeric(FLERR, arg[3], false, lmp);
-    mu_one = utils::numeric(FLERR, arg[4], false, lmp);
-    h_one = utils::numeric(FLERR, arg[5], false, lmp);
-    if (rho0_one <= 0.0)
-      error->all(FLERR, "Pair_coeff cell/sph: reference density rho0 = {} must be > 0", rho0_one);
-    if (bulk_one <= 0.0)
-      error->all(FLERR, "Pair_coeff cell/sph: bulk modulus K = {} must be > 0", bulk_one);
-    if (mu_one < 0.0)
-      error->all(FLERR, "Pair_coeff cell/sph: viscosity mu = {} must be >= 0", mu_one);
-    if (h_one <= 0.0)
-      error->all(FLERR, "Pair_coeff cell/sph: smoothing length h = {} must be > 0", h_one);
-    const std::string c = "Pair_coeff cell/sph: ";
-    CellLimits::within(error, c + "reference density rho0", rho0_one, 0.0, CellLimits::SPH_RHO0_MAX,
-                       "kg/m^3", true);
-    CellLimits::within(error, c + "bulk modulus K", bulk_one, 0.0, CellLimits::SPH_K_MAX, "Pa",
-                       true);
-    CellLimits::within(error, c + "viscosity mu", mu_one, 0.0, CellLimits::SPH_MU_MAX, "Pa s",
-                       false);
-    CellLimits::within(error, c + "smoothing length h", h_one, 0.0, CellLimits::SPH_H_MAX, "m",
-                       true);
-  }
-
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = std::max(jlo, i); j <= jhi; j++) {
-      rho0[i][j] = rho0_one;
-      bulk[i][j] = bulk_one;
-      mu[i][j] = mu_one;
-      h[i][j] = h_one;
-      boundary[i][j] = wall;
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0)
-    error->all(FLERR, "Incorrect args for pair_coeff cell/sph: no type pair in {} {}", arg[0],
-               arg[1]);
-}
-
-/* ----------------------------------------------------------------------
-   check the per-atom data, request a half list, select the loops
-------------------------------------------------------------------------- */
-
-void PairCellSPH::init_style()
-{
-  if (!atom->rmass_flag)
-    error->all(FLERR,
-               "Pair style cell/sph needs per-atom masses (rmass), which atom_style {} does not "
-               "have: add 'fix cellatoms all property/atom rmass d2_xref 3 ghost yes' before "
-               "read_data",
-               atom->atom_style);
-  int flag, cols;
-  irho = atom->find_custom("rho", flag, cols);
-  if (irho < 0 || flag != 1 || cols != 0)
-    error->all(FLERR,
-               "Pair style cell/sph needs the per-atom vector rho: add 'fix cellsph all "
-               "property/atom d_rho d_pressure ghost yes' before read_data");
-  ipressure = atom->find_custom("pressure", flag, cols);
-  if (ipressure < 0 || flag != 1 || cols != 0)
-    error->all(FLERR,
-               "Pair style cell/sph needs the per-atom vector pressure: add 'fix cellsph all "
-               "property/atom d_rho d_pressure ghost yes' before read_data");
-
-  if (hmode != HFIXED) {
-    int hflag, hcols, oflag, ocols;
-    ih = atom->find_custom("h", hflag, hcols);
-    iomega = atom->find_custom("omega", oflag, ocols);
-    if (ih < 0 || hflag != 1 || hcols != 0 || iomega < 0 || oflag != 1 || ocols != 0)
-      error->all(FLERR,
-                 "Pair style cell/sph: h {} needs the per-atom vectors h and omega: add 'fix "
-                 "cellsph all property/atom d_rho d_pressure d_h d_omega ghost yes' before "
-                 "read_data",
-                 HMODE_NAMES[hmode]);
-  }
-
-  if (temp_set && !temp.name.empty()) { temp.resolve(lmp, "Pair style cell/sph: temp variable"); }
-  muscale = 1.0;
-
-  const int n = atom->ntypes;
-  viscous = 0;
-  bool all_set = true;
-  for (int i = 1; i <= n; i++) {
-    fluid[i] = setflag[i][i];
-    for (int j = i; j <= n; j++) {
-      if (setflag[i][j] && mu[i][j] > 0.0) viscous = 1;
-      all_set = all_set && setflag[i][j];
-    }
-  }
-  // per-atom h: the largest h of each fluid type that the neighbour cutoff allows
-  for (int i = 1; i <= n; i++)
-    hcap[i] = cut_global > 0.0 ? cut_global / CellKernel::support(kernel) : run_hcap(i);
-  walls = has_wall_boundary() ? 1 : 0;
-  if (background_in.is_variable())
-    background_in.resolve(lmp, "Pair style cell/sph: background variable");
-  if ((background != 0.0 || background_in.is_variable() || background_auto) && !walls) {
-    const std::string pb = background_auto ? fmt::format("auto {} Pa", background_min)
-        : background_in.is_variable()      ? "v_" + background_in.name
-                                           : fmt::format("{} Pa", background);
-    error->all(FLERR,
-               "Pair cell/sph: background P_b = {} needs the wall boundary (pair_coeff I J wall), "
-               "whose triangles carry P_b from outside",
-               pb);
-  }
-  if (walls) {
-    if (domain->dimension != 3)
-      error->all(FLERR, "Pair cell/sph: the wall boundary (pair_coeff I J wall) is 3-D only");
-    if (!atom->molecule_flag)
-      error->all(FLERR,
-                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs cell (molecule) "
-                 "IDs: use atom_style angle");
-    if (!force->angle)
-      error->all(FLERR,
-                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs the wall "
-                 "triangles as angles: define an angle style (angle_style zero)");
-    if (!force->newton_pair)
-      error->all(FLERR,
-                 "Pair cell/sph: the wall boundary (pair_coeff I J wall) needs newton pair on "
-                 "(the wall's reactions go to ghost atoms)");
-    if (!atom->num_angle)
-      error->all(FLERR, "Pair cell/sph: the wall boundary needs an atom style with angles");
-    // the contact candidates kept between exact evaluations assume no atom has moved half the
-    // skin since the last build, which LAMMPS checks every step only with these settings
-    if (comm->me == 0 && (neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check))
-      error->warning(FLERR,
-                     "Pair cell/sph: the wall boundary wants neigh_modify delay 0 every 1 check "
-                     "yes (now delay {} every {} check {}; the default of LAMMPS before 3 Nov "
-                     "2022 is delay 10): atoms may move past the skin between builds",
-                     neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
-    // the support at the largest h of a fluid type with a boundary (fixed: its h)
-    wallsupport = 0.0;
-    for (int i = 1; i <= n; i++)
-      for (int j = i; j <= n; j++)
-        if (setflag[i][j] && boundary[i][j]) {
-          const int f = setflag[i][i] ? i : j;
-          wallsupport = std::max(
-              wallsupport, CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]));
-        }
-    tabulate_phi();
-    comm_forward = std::max(3, CellWallTriangles::COMM_SIZE);
-    tris->start_run();
-  }
-  writedata = all_set ? 1 : 0;
-  if (viscous && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Pair style cell/sph with viscosity mu > 0 needs ghost velocities: use "
-               "'comm_modify vel yes'");
-
-  tagint massless = MAXTAGINT, first;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (fluid[atom->type[i]] && !(atom->rmass[i] > 0.0))
-      massless = std::min(massless, atom->tag[i]);
-  MPI_Allreduce(&massless, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (first != MAXTAGINT)
-    error->all(FLERR,
-               "Pair style cell/sph: fluid atom {} has per-atom mass rmass <= 0: set the masses "
-               "(e.g. 'set type <I> mass <m>')",
-               first);
-
-  CellCompat::request_list(neighbor, this, instance_me, CellCompat::REQ_DEFAULT);
-}
-
-/* ----------------------------------------------------------------------
-   the largest h of fluid type t that the default cutoff allows in this run: GROW x the largest
-   per-atom h of the type over all ranks (h adaptive, atoms that have one), so that the neighbour
-   list follows a cell that dries or takes up water; from the pair_coeff h before any atom has one
-------------------------------------------------------------------------- */
-
-double PairCellSPH::run_hcap(int t) const
-{
-  double hmax = 0.0, all = 0.0;
-  if (hmode != HFIXED) {
-    const double *hv = atom->dvector[ih];
-    for (int i = 0; i < atom->nlocal; i++)
-      if (atom->type[i] == t) hmax = std::max(hmax, hv[i]);
-  }
-  MPI_Allreduce(&hmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return GROW * (all > 0.0 ? all : h[t][t]);
-}
-
-/* ----------------------------------------------------------------------
-   kernel constants, viscosity and cutoff of one type pair; the equation of state of type i
-------------------------------------------------------------------------- */
-
-double PairCellSPH::init_one(int i, int j)
-{
-  if (!setflag[i][j]) {
-    pc[i][j] = pc[j][i] = PairConst{0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0.0, 0.0};
-    return 0.0;
-  }
-  if (boundary[i][j]) {
-    const int f = setflag[i][i] ? i : j, w = f == i ? j : i;
-    if (!setflag[f][f] || setflag[w][w])
-      error->all(FLERR,
-                 "Pair cell/sph: pair_coeff {} {} wall needs one fluid type (with pair_coeff K K "
-                 "cell/sph) and one wall type (without)",
-                 i, j);
-    const double support = CellKernel::support(kernel) * (hmode == HFIXED ? h[f][f] : hcap[f]);
-    // contact range delta = h / 5 and force F_c = K delta^2 at the surface (doc/pair_cell_sph.md)
-    const double reach = h[f][f] / CONTACT_H;
-    // the neighbour range reaches every triangle whose centroid is inside the kernel support:
-    // the centroid is within 2/3 of the longest edge of the triangle's keeper
-    const double range = support + 2.0 / 3.0 * (tris->edge_cap() - neighbor->skin);
-    pc[i][j] = PairConst{range * range, CellKernel::scale(kernel, 3, h[f][f]),
-                         0.0,           1,
-                         reach,         bulk[f][f] * reach * reach};
-    pc[j][i] = pc[i][j];
-    return cut_global > 0.0 ? std::max(cut_global, range) : range;
-  }
-  for (int t : {i, j}) {
-    if (!setflag[t][t])
-      error->all(FLERR,
-                 "Pair cell/sph: pair_coeff {} {} is set but pair_coeff {} {} is not (type {} "
-                 "takes its equation of state from pair_coeff {} {})",
-                 i, j, t, t, t, t, t);
-    if (rho0[i][j] != rho0[t][t] || bulk[i][j] != bulk[t][t])
-      error->all(FLERR,
-                 "Pair cell/sph: pair_coeff {} {} has rho0 = {}, K = {} but pair_coeff {} {} has "
-                 "rho0 = {}, K = {}: interacting types must share the equation of state",
-                 i, j, rho0[i][j], bulk[i][j], t, t, rho0[t][t], bulk[t][t]);
-  }
-
-  const int dim = domain->dimension;
-  const double support = CellKernel::support(kernel) * h[i][j];
-  if (cut_global > 0.0 && cut_global < support)
-    error->all(FLERR,
-               "Pair style cell/sph: cutoff = {} is shorter than the support {} of the {} kernel "
-               "for pair {} {} ({} h, h = {})",
-               cut_global, support, CellKernel::NAMES[kernel], i, j, CellKernel::support(kernel),
-               h[i][j]);
-
-  // per-atom h: every pair within the support of the largest h allowed
-  const double reach =
-      hmode == HFIXED ? support : CellKernel::support(kernel) * std::max(hcap[i], hcap[j]);
-  pc[i][j].cutsq = reach * reach;
-  pc[i][j].scale = CellKernel::scale(kernel, dim, h[i][j]);
-  pc[i][j].mu2 = 2.0 * mu[i][j];
-  pc[i][j].boundary = 0;
-  pc[j][i] = pc[i][j];
-
-  if (i == j) {
-    wself[i] = CellKernel::W(kernel, pc[i][i].scale, 0.0);
-    invrho0[i] = 1.0 / rho0[i][i];
-  }
-  return cut_global > 0.0 ? cut_global : reach;
-}
-
-/* ----------------------------------------------------------------------
-   temp T: mu(T) = mu mu_w(T)/mu_w(25 C) of every pair (mu of pair_coeff at 25 C), mu_w from the
-   Vogel equation of liquid water (doc/model.md §5.9); T evaluated once per step (a variable may
-   change it)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::update_viscosity()
-{
-  const double t = temp.get(lmp);
-  if (!vogel_range(t))
-    error->all(FLERR,
-               "Pair style cell/sph: temperature T = {} K (variable {}) on step {} is outside "
-               "{}-{} K (0-370 C), the range of the Vogel correlation of the viscosity of water",
-               t, temp.name.empty() ? "-" : temp.name, update->ntimestep, CellWater::VOGEL_TMIN,
-               CellWater::VOGEL_TMAX);
-  temperature = t;
-  // mu(T) / mu(25 C) = mu_w(T) / mu_w(25 C) (doc/model.md §5.9)
-  const double scale = CellWater::water_viscosity(t) / CellWater::water_viscosity(TREF);
-  if (scale == muscale) return;
-  muscale = scale;
-  const int n = atom->ntypes;
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++)
-      if (setflag[i][j] && !pc[i][j].boundary)
-        pc[i][j].mu2 = pc[j][i].mu2 = 2.0 * mu[i][j] * muscale;
-}
-
-/* ----------------------------------------------------------------------
-   background P_b from its equal-style variable, evaluated once per step (doc/pair_cell_sph.md,
-   background pressure)
-------------------------------------------------------------------------- */
-
-void PairCellSPH::update_background()
-{
-  background = background_in.get(lmp);
-  if (!std::isfinite(background))
-    error->all(FLERR,
-               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} is not a "
-               "number",
-               background, background_in.name, update->ntimestep);
-  if (std::fabs(background) > CellLimits::PRESSURE_MAX)
-    error->all(FLERR,
-               "Pair style cell/sph: background P_b = {} Pa (variable {}) on step {} must be in "
-               "[{:g}, {:g}] Pa",
-               background, background_in.name, update->ntimestep, -CellLimits::PRESSURE_MAX,
-               CellLimits::PRESSURE_MAX);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) {
-        fwrite(&boundary[i][j], sizeof(int), 1, fp);
-        fwrite(&rho0[i][j], sizeof(double), 1, fp);
-        fwrite(&bulk[i][j], sizeof(double), 1, fp);
-        fwrite(&mu[i][j], sizeof(double), 1, fp);
-        fwrite(&h[i][j], sizeof(double), 1, fp);
-      }
-    }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  const int me = comm->me;
-  double adhesion = 0.0;    // versions 7-11: the removed wall adhesion W, refused if > 0
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (setflag[i][j]) {
-        if (restart_version >= 2) {
-          if (me == 0) utils::sfread(FLERR, &boundary[i][j], sizeof(int), 1, fp, nullptr, error);
-          MPI_Bcast(&boundary[i][j], 1, MPI_INT, 0, world);
-        }
-        double values[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
-        const int nvalues = restart_version >= 7 && restart_version < 12 ? 5 : 4;
-        if (me == 0) utils::sfread(FLERR, values, sizeof(double), nvalues, fp, nullptr, error);
-        MPI_Bcast(values, 5, MPI_DOUBLE, 0, world);
-        rho0[i][j] = values[0];
-        bulk[i][j] = values[1];
-        mu[i][j] = values[2];
-        h[i][j] = values[3];
-        adhesion = std::max(adhesion, values[4]);
-      }
-    }
-  if (adhesion > 0.0)
-    error->all(FLERR,
-               "Pair cell/sph: the restart file has a wall boundary with adhesion W = {} J/m^2, "
-               "which was removed: the wall boundary with 'background auto' (or a background "
-               "P_b) holds the fluid on the wall",
-               adhesion);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::write_restart_settings(FILE *fp)
-{
-  // version 1 (no marker) began with the kernel index >= 0; later versions with -version
-  const int marker = -RESTART_VERSION;
-  fwrite(&marker, sizeof(int), 1, fp);
-  fwrite(&kernel, sizeof(int), 1, fp);
-  fwrite(&cut_global, sizeof(double), 1, fp);
-  fwrite(&hmode, sizeof(int), 1, fp);
-  fwrite(&eta, sizeof(double), 1, fp);
-  // temp (flag, number, variable name)
-  fwrite(&temp_set, sizeof(int), 1, fp);
-  fwrite(&temp.value, sizeof(double), 1, fp);
-  const int len = static_cast<int>(temp.name.size());
-  fwrite(&len, sizeof(int), 1, fp);
-  if (len > 0) fwrite(temp.name.data(), sizeof(char), len, fp);
-  // background (number, variable name, auto flag, P_min), auto's P_b now and whether it has one
-  fwrite(&background_in.value, sizeof(double), 1, fp);
-  const int blen = static_cast<int>(background_in.name.size());
-  fwrite(&blen, sizeof(int), 1, fp);
-  if (blen > 0) fwrite(background_in.name.data(), sizeof(char), blen, fp);
-  fwrite(&background_auto, sizeof(int), 1, fp);
-  fwrite(&background_min, sizeof(double), 1, fp);
-  fwrite(&background, sizeof(double), 1, fp);
-  fwrite(&background_set, sizeof(int), 1, fp);
-}
-
-/* ----------------------------------------------------------------------
-   the settings of a restart file of any version (on rank 0): those of the removed keywords
-   (version < 12: eos, Tref, shift, tensile eps n dp, grow, background auto lag) into old
-------------------------------------------------------------------------- */
-
-void PairCellSPH::read_settings(FILE *fp, Removed &old, std::string &name, std::string &bname,
-                                double &pb)
-{
-  const int v = restart_version;
-  const auto get = [&](auto *value, int n = 1) {
-    utils::sfread(FLERR, value, sizeof(*value), n, fp, nullptr, error);
-  };
-  const auto text = [&](std::string &str) {
-    int n = 0;
-    get(&n);
-    std::vector<char> chars(n);
-    if (n > 0) get(chars.data(), n);
-    str.assign(chars.begin(), chars.end());
-  };
-  if (v < 12) get(&old.eos);
-  get(&cut_global);
-  if (v >= 3) get(&hmode), get(&eta);
-  if (v >= 4) {
-    get(&temp_set);
-    get(&temp.value);
-    if (v < 12) get(&old.tref);
-    text(name);
-  }
-  if (v >= 5 && v < 12) get(&old.shift);
-  if (v >= 6 && v < 12) {
-    int n = 0;
-    double dp = 0.0;
-    get(&old.tensile), get(&n), get(&dp);
-  }
-  if (v >= 8 && v < 12) get(&old.grow);
-  if (v >= 9) {
-    get(&background_in.value);
-    text(bname);
-    get(&background_auto);
-    get(&background_min);
-  }
-  if (v >= 10 && v < 12) get(&old.lag);
-  if (v >= 11) get(&pb), get(&background_set);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::read_restart_settings(FILE *fp)
-{
-  // a file of a version before 12 may hold a removed keyword's setting: refused when it was on
-  // (grow, which changed the neighbour range only, is read and ignored)
-  Removed old;
-  std::string name, bname;
-  double pb = 0.0;
-  hmode = HFIXED;
-  eta = 0.0;
-  temp_set = 0;
-  temp.value = 0.0;
-  background_in = CellQuantity();
-  background_auto = background_set = 0;
-  background_min = 0.0;
-  if (comm->me == 0) {
-    int first;
-    utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
-    restart_version = CellRestart::version(first);
-    if (first < 0) utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
-    kernel = first;
-    read_settings(fp, old, name, bname, pb);
-  }
-  MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
-  CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
-  double values[8] = {cut_global,     eta, temp.value, background_in.value,
-                      background_min, pb,  old.tref,   old.shift};
-  MPI_Bcast(values, 8, MPI_DOUBLE, 0, world);
-  double olds[2] = {old.tensile, old.lag};
-  MPI_Bcast(olds, 2, MPI_DOUBLE, 0, world);
-  int flags[6] = {kernel, hmode, temp_set, background_auto, background_set, old.eos};
-  MPI_Bcast(flags, 6, MPI_INT, 0, world);
-  cut_global = values[0], eta = values[1], temp.value = values[2];
-  background_in.value = values[3], background_min = values[4], pb = values[5];
-  kernel = flags[0], hmode = flags[1], temp_set = flags[2];
-  background_auto = flags[3], background_set = flags[4];
-  const char *gone = flags[5] != 0    ? "eos tait"
-      : hmode == 1                    ? "h mass"
-      : temp_set && values[6] != TREF ? "Tref"
-      : values[7] > 0.0               ? "shift"
-      : olds[0] > 0.0                 ? "tensile"
-      : olds[1] >= 0.0                ? "background auto ... lag"
-                                      : nullptr;
-  if (gone)
-    error->all(FLERR,
-               "Pair cell/sph: the restart file (format version {}) uses '{}', which was removed "
-               "(doc/pair_cell_sph.md, removed keywords): continue it with an older cellsph",
-               restart_version, gone);
-  // version 11: a P_b it has is one that steps have advanced
-  if (restart_version == 11 && background_set) background_set = BACKGROUND_STEPPED;
-  background = background_auto && background_set ? pb : background_in.value;
-  for (std::string *str : {&name, &bname}) {
-    int n = static_cast<int>(str->size());
-    MPI_Bcast(&n, 1, MPI_INT, 0, world);
-    str->resize(n);
-    if (n > 0) MPI_Bcast(&(*str)[0], n, MPI_CHAR, 0, world);
-  }
-  temp.name = name;
-  background_in.name = bname;
-  temp.ivar = -1;
-  muscale = 1.0;
-}
-
-/* ----------------------------------------------------------------------
-   Pair Coeffs: pair I I only; cross pairs are not mixed, so they need 'write_data ... pair ij'
-------------------------------------------------------------------------- */
-
-void PairCellSPH::write_data(FILE *fp)
-{
-  for (int i = 1; i <= atom->ntypes; i++)
-    fprintf(fp, "%d %.16g %.16g %.16g %.16g\n", i, rho0[i][i], bulk[i][i], mu[i][i], h[i][i]);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i + 1; j <= atom->ntypes; j++)
-      if (setflag[i][j])
-        error->warning(FLERR,
-                       "Pair cell/sph: the Pair Coeffs section cannot hold pair_coeff {} {} "
-                       "(cell/sph does not mix): use 'write_data <file> pair ij'",
-                       i, j);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairCellSPH::write_data_all(FILE *fp)
-{
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
-      if (boundary[i][j])
-        fprintf(fp, "%d %d wall\n", i, j);
-      else
-        fprintf(fp, "%d %d %.16g %.16g %.16g %.16g\n", i, j, rho0[i][j], bulk[i][j], mu[i][j],
-                h[i][j]);
-}
-
 /* ----------------------------------------------------------------------
    pressure force between atoms i and j from their stored rho and pressure; energy 0: the
    equation-of-state energy is per atom, not per pair
@@ -2109,7 +584,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
 {
   fforce = 0.0;
   const PairConst &p = pc[itype][jtype];
-  if (rsq >= p.cutsq || p.boundary) return 0.0;
+  if (rsq >= p.cutsq) return 0.0;    // also a wall boundary pair (cutsq 0)
   const double *rho = atom->dvector[irho];
   const double *pressure = atom->dvector[ipressure];
   if (hmode != HFIXED) {
@@ -2159,12 +634,8 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES) return tris->pack(n, list, buf);
-  if (commode == COMM_AHEAD) {
-    for (int k = 0; k < n; k++)
-      for (int d = 0; d < 3; d++) buf[m++] = disp[list[k]][d];
-    return m;
-  }
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD)
+    return wall.pack_forward(commode, n, list, buf);
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
     for (int k = 0; k < n; k++) buf[m++] = hv[list[k]];
@@ -2176,7 +647,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
   for (int k = 0; k < n; k++) {
     buf[m++] = rho[list[k]];
     buf[m++] = pressure[list[k]];
-    if (walls) buf[m++] = deficit[list[k]];
+    if (walls) buf[m++] = wall.deficit[list[k]];
     if (peratom) {
       buf[m++] = atom->dvector[ih][list[k]];
       buf[m++] = atom->dvector[iomega][list[k]];
@@ -2190,13 +661,8 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES) {
-    tris->unpack(n, first, buf);
-    return;
-  }
-  if (commode == COMM_AHEAD) {
-    for (int i = first; i < first + n; i++)
-      for (int d = 0; d < 3; d++) disp[i][d] = buf[m++];
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD) {
+    wall.unpack_forward(commode, n, first, buf);
     return;
   }
   if (commode == COMM_H) {
@@ -2210,7 +676,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     rho[i] = buf[m++];
     pressure[i] = buf[m++];
-    if (walls) deficit[i] = buf[m++];
+    if (walls) wall.deficit[i] = buf[m++];
     if (peratom) {
       atom->dvector[ih][i] = buf[m++];
       atom->dvector[iomega][i] = buf[m++];
@@ -2228,22 +694,16 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
   int m = 0;
   if (commode == COMM_DENSITY || commode == COMM_SUMS) {
     const double *rho = atom->dvector[irho];
-    const int peratom = hmode != HFIXED, wall = walls && commode == COMM_DENSITY;
+    const int peratom = hmode != HFIXED, deficits = walls && commode == COMM_DENSITY;
     for (int i = first; i < first + n; i++) {
       buf[m++] = rho[i];
       if (peratom) buf[m++] = dsum[i];
-      if (wall) buf[m++] = deficit[i];
-      if (wall && peratom) buf[m++] = dhdef[i];
+      if (deficits) buf[m++] = wall.deficit[i];
+      if (deficits && peratom) buf[m++] = wall.dhdef[i];
     }
     return m;
   }
-  if (commode == COMM_JUMP) {
-    for (int i = first; i < first + n; i++) buf[m++] = jump[i];
-    return m;
-  }
-  for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) buf[m++] = wallload[i][d];
-  return m;
+  return wall.pack_reverse(commode, n, first, buf);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2253,33 +713,16 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
   int m = 0;
   if (commode == COMM_DENSITY || commode == COMM_SUMS) {
     double *rho = atom->dvector[irho];
-    const int peratom = hmode != HFIXED, wall = walls && commode == COMM_DENSITY;
+    const int peratom = hmode != HFIXED, deficits = walls && commode == COMM_DENSITY;
     for (int k = 0; k < n; k++) {
       rho[list[k]] += buf[m++];
       if (peratom) dsum[list[k]] += buf[m++];
-      if (wall) deficit[list[k]] += buf[m++];
-      if (wall && peratom) dhdef[list[k]] += buf[m++];
+      if (deficits) wall.deficit[list[k]] += buf[m++];
+      if (deficits && peratom) wall.dhdef[list[k]] += buf[m++];
     }
     return;
   }
-  if (commode == COMM_JUMP) {
-    for (int k = 0; k < n; k++) jump[list[k]] += buf[m++];
-    return;
-  }
-  for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) wallload[list[k]][d] += buf[m++];
-}
-
-/* ----------------------------------------------------------------------
-   whether a type pair is a wall boundary pair (before init_style, which sets walls)
-------------------------------------------------------------------------- */
-
-bool PairCellSPH::has_wall_boundary() const
-{
-  for (int i = 1; allocated && i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j] && boundary[i][j]) return true;
-  return false;
+  wall.unpack_reverse(commode, n, list, buf);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -2289,13 +732,28 @@ double PairCellSPH::memory_usage()
   double bytes = Pair::memory_usage() + 2.0 * nmax * sizeof(double) + maxfirst * sizeof(int) +
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
   if (hmode != HFIXED)
-    bytes += nmax * (walls ? 7.0 : 4.0) * sizeof(double) + maxpairs * sizeof(double) +
-        step.capacity() * sizeof(double);
-  if (walls)
-    bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
-        terms.capacity() * sizeof(Term) + termlen.capacity() * sizeof(double) +
-        (touching.capacity() + near.capacity()) * sizeof(touching[0]) +
-        fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
-        hsplit.capacity() * sizeof(double) + boundarypairs.capacity() * sizeof(boundarypairs[0]);
+    bytes +=
+        nmax * 4.0 * sizeof(double) + maxpairs * sizeof(double) + step.capacity() * sizeof(double);
+  if (walls) bytes += wall.memory_usage(hmode != HFIXED);
   return bytes;
+}
+
+/* ----------------------------------------------------------------------
+   a forward comm of the kind mode (owned to ghost atoms)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::forward(int mode)
+{
+  commode = static_cast<decltype(commode)>(mode);
+  CellCompat::forward_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   a reverse comm of the kind mode: the ghost atoms' sums into their owners, with newton pair on
+------------------------------------------------------------------------- */
+
+void PairCellSPH::reverse(int mode)
+{
+  commode = static_cast<decltype(commode)>(mode);
+  if (force->newton_pair) CellCompat::reverse_comm(comm, this);
 }

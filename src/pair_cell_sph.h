@@ -1,7 +1,11 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    pair_style cell/sph: the cell fluid, summation density with per-atom mass, pressure force F^p
-   and Morris viscous force F^v (doc/model.md §3.1-3.5)
+   and Morris viscous force F^v (doc/model.md §3.1-3.5). The class's parts: the density and
+   force passes (pair_cell_sph.cpp), h adaptive (pair_cell_sph_adaptive_h.cpp), the keywords,
+   coefficients and init (pair_cell_sph_settings.cpp), restart and data files
+   (pair_cell_sph_restart.cpp); the wall boundary is a component of its own, the member wall
+   (pair_cell_sph_boundary.h)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_CELL_SPH_H
@@ -10,8 +14,8 @@
 #include "cell_kernel.h"
 #include "cell_quantity.h"
 #include "pair.h"
+#include "pair_cell_sph_boundary.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -35,7 +39,7 @@ class PairCellSPH : public Pair {
   double single(int, int, int, int, double, double, double, double &) override;
   void *extract(const char *, int &) override;
   // the wall boundary's force of each cell's fluid on its wall atoms (owned atoms), or nullptr
-  double **wall_load() const { return walls ? wallload : nullptr; }
+  double **wall_load() const { return walls ? wall.wallload : nullptr; }
   bool has_wall_boundary() const;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
@@ -47,6 +51,18 @@ class PairCellSPH : public Pair {
   enum HMode { HFIXED = 0, HADAPTIVE = 2 };
 
  protected:
+  // per-atom h: the neighbour cutoff allows h up to GROW x the largest h at the run's start
+  // (run_hcap; unless a cutoff is given)
+  static constexpr double GROW = 1.5;
+  // h adaptive: the density pass keeps the pairs within (1 + HMARGIN) x the support of the larger
+  // h, so that the iterations sum over those pairs only while every h changed by less than HMARGIN
+  static constexpr double HMARGIN = 1e-3;
+  // the temperature (K) of the pair_coeff viscosity mu: 25 C
+  static constexpr double TREF = 298.15;
+  // background auto: the default relaxation time of P_b, in steps (doc/pair_cell_sph.md: 20 steps
+  // let the seed cell's breathing grow in undamped dynamics, 200 damp it)
+  static constexpr int AUTO_LAG = 200;
+
   int kernel;
   double cut_global;    // neighbour cutoff from pair_style; 0 = the kernel support
   int hmode;            // HFIXED or HADAPTIVE (pair_style keyword h)
@@ -75,15 +91,12 @@ class PairCellSPH : public Pair {
   double background_min;    // P_min (Pa)
   int parse_background(int, char **);
   void update_background();
-  template <int EVFLAG> void outside_pressure();
 
   struct PairConst {
-    double cutsq;               // (kernel support)^2; 0 if the pair is not computed
-    CellKernel::Scale scale;    // kernel constants at this pair's h (the fluid's for a boundary)
+    double cutsq;               // (kernel support)^2; 0 if the pair is not computed (or a wall
+                                // boundary pair, pair_cell_sph_boundary.h)
+    CellKernel::Scale scale;    // kernel constants at this pair's h
     double mu2;                 // mu_i + mu_j
-    int boundary;               // 1: fluid-wall pair of the wall boundary, no SPH sums
-    double reach;               // boundary: range delta of the contact with the wall surface
-    double fcontact;            // boundary: contact force F_c at the surface
   };
   PairConst **pc;    // per type pair, from init_one()
 
@@ -99,50 +112,17 @@ class PairCellSPH : public Pair {
   double *hcap;                // largest h the neighbour cutoff allows, per fluid type
   double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
   double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
-  double *dhdef;               // wall boundary: d(1 - gamma_i)/dh_i
-  double *dhdef0;              // the same at the last exact evaluation (partial sums per rank)
-  double *hbase;               // h at the last exact evaluation
-  std::vector<double> step;    // Newton step of h of the list's atoms
+  std::vector<double> step;    // h adaptive: Newton step of h of the list's atoms
 
   // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
-  // cell's wall; the wall enters as the surface integral of its triangles (doc/pair_cell_sph.md)
-  int **boundary;        // 1 for a fluid-wall type pair of the wall boundary
-  int walls;             // 1 if any type pair is a boundary pair
-  double wallsupport;    // the longest kernel support of a fluid type with a boundary in this run
-  double gamma_min;      // floor of the kernel fraction gamma inside the cell
-  double phidq;          // q step of the table of Phi(q) = kernel fraction beyond q = r/h
-  std::vector<double> phi, dphi;    // Phi and dPhi/dq at the table points
-  double *deficit;                  // 1 - gamma_i of fluid atom i
-  double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
-  // the wall triangles, each kept by its middle angle atom b (cell_wall_triangles.h); the
-  // boundary pairs' cutoff is the kernel support + 2/3 of the run's edge allowance
-  class CellWallTriangles *tris;
-  struct Term {
-    int f, v;          // fluid atom, wall vertex
-    double grad[3];    // grad_v D_f: derivative of 1 - gamma_f in the vertex's position
-  };
-  std::vector<Term> terms;    // per fluid atom and vertex of the triangles in its kernel support
-  std::vector<double> termlen;    // |x_v - x_f| of each term at the exact evaluation (scratch)
-  double *deficit0;               // 1 - gamma at the last exact evaluation (partial sums per rank)
-  double **xbase;                 // positions of the last exact evaluation (base_positions)
-  double **gradsum;               // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
-  double **disp;                  // x - xbase; in base_positions() the step to the base
-  double *jump;                   // change of 1 - gamma at an exact evaluation (partial per rank)
-  double **xnear;                 // positions when the near contact candidates were taken
-  std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
-  int *slot;                     // the term of vertex v of the fluid atom being evaluated, else -1
-  int refreshing;                // 1 if this step evaluates the kernel completion exactly
-  int rebuilt;                   // 1 on a neighbour build: contact candidates are searched
-  int predicted;                 // 1 if the last exact evaluation's base is ahead of the atoms
-  int measuring;                 // 1 if this exact evaluation measures the jump (next_interval)
-  int every, pending;            // steps to the next exact evaluation, and from it to the one after
-  double lastjump;               // largest jump of 1 - gamma (all ranks) at the last measurement
-  bigint refreshed;              // step of the last exact evaluation
-  std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
-  std::vector<std::array<int, 4>> near;        // those of them near contact (wall_forces)
-  std::vector<int> fluidfirst, fluidj;         // the list's fluid pairs: fluidj[fluidfirst[ii]]..
-  std::vector<std::array<int, 2>> boundarypairs;    // the list's fluid-wall pairs, same cell, by f
-  std::vector<double> hsplit;                       // per-atom h at the last split_list()
+  // cell's wall (pair_cell_sph_boundary.h); boundary[i][j] of pair_coeff, walls if any is set
+  friend class PairCellSPHBoundary;
+  int **boundary;    // 1 for a fluid-wall type pair of the wall boundary
+  int walls;         // 1 if any type pair is a boundary pair (init_style)
+  PairCellSPHBoundary wall;
+
+  // what the next forward or reverse comm carries: the fluid's density pass (rho, pressure, with
+  // the wall boundary's deficit), its sums only, or h; or the wall boundary's (its pack_*)
   enum {
     COMM_DENSITY,
     COMM_SUMS,
@@ -152,17 +132,20 @@ class PairCellSPH : public Pair {
     COMM_AHEAD,
     COMM_JUMP
   } commode;
+  void forward(int);      // a forward comm of this kind
+  void reverse(int);      // a reverse comm of this kind (ghost sums into owners, newton pair on)
   int restart_version;    // format version of the restart file read, 1 = before versions
   // the settings of the keywords removed in version 12, as an older restart file has them
   struct Removed {
     int eos = 0;             // 1: tait
-    double tref = 298.15;    // Tref (K)
+    double tref = TREF;      // Tref (K)
     double shift = 0.0;      // shift A
     double tensile = 0.0;    // tensile eps
     double grow = 1.5;       // grow (ignored: the neighbour range only)
     double lag = -1.0;       // background auto lag (s); < 0: not given
   };
   void read_settings(FILE *, Removed &, std::string &, std::string &, double &);
+  const char *removed_setting(const Removed &) const;
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
   double *rhoinv;    // 1 / rho of owned and ghost fluid atoms
@@ -177,37 +160,31 @@ class PairCellSPH : public Pair {
   double *pairmu;     // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
   int maxfirst, maxpairs;
 
-  void allocate();
+  // the density and force passes (pair_cell_sph.cpp)
   void grow_peratom();
   void destroy_peratom();
-  void unstable(int) const;
+  void density_pass(int);
+  template <int KERNEL, int PERATOM> void self_density();
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
-  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
   template <int KERNEL, int VISCOUS>
   void peratom_pair(int, int, double, double, int, double &, double &);
   template <int KERNEL, int VISCOUS> void resum_density();
-  void density_pass(int);
+  void grow_pairs(int);
+  void apply_eos();
+  void unstable(int) const;
+  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
+  // h adaptive (pair_cell_sph_adaptive_h.cpp)
   void atom_h(int &);
   void kernel_scales();
-  double newton_h();
   void solve_h();
+  double newton_h();
   void too_long(int) const;
-  double run_hcap(int) const;
   void unsolvable(int, double) const;
-  template <int EVFLAG> void wall_forces();
-  template <int PERATOM> void boundary_terms(int, int, const PairConst &);
-  void split_list(double);
-  bool outgrown() const;
-  void base_positions(int);
-  void keep_base();
-  void next_interval();
-  void linear_deficit();
-  template <int EVFLAG> bool contact(int, int, int, int, double);
-  bool moved_since_near(double) const;
-  void tabulate_phi();
-  void phi_beyond(double q, double &value, double &slope) const;
-  void apply_eos();
-  void grow_pairs(int);
+  // pair_coeff arrays and the checks of init_style (pair_cell_sph_settings.cpp)
+  void allocate();
+  void find_fields();
+  void check_masses();
+  double run_hcap(int) const;
 };
 
 }    // namespace LAMMPS_NS
