@@ -12,6 +12,7 @@
 #include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_restart.h"
+#include "cell_styles.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -244,13 +245,13 @@ int BondCellNeoHookean::parse_law(const std::string &name)
 void BondCellNeoHookean::init_style()
 {
   int flag, cols;
-  ixref = atom->find_custom("xref", flag, cols);
+  ixref = atom->find_custom(CellField::XREF, flag, cols);
   if (ixref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Bond style cell/neohookean needs per-atom reference positions: add "
                "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
 
-  iaref = atom->find_custom("aref", flag, cols);
+  iaref = atom->find_custom(CellField::AREF, flag, cols);
   if (iaref >= 0 && (flag != 1 || cols != 0))
     error->all(FLERR, "Bond style cell/neohookean: per-atom 'aref' must be a d_aref vector");
 

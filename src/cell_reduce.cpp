@@ -5,13 +5,12 @@
 #include "cell_reduce.h"
 
 #include "atom.h"
+#include "cell_styles.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "group.h"
-#include "pair_cell_sph.h"
-#include "pair_cell_wall.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +34,7 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
     Pointers(lmp),
     command(command_in), group_name(group->names[igroup]), fluidtype(fluid), walltype(wall),
     surfacebit(0), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
-    geometry_only(!fluid_sums), wallpair(nullptr), sphpair(nullptr), cells(lmp, command_in, igroup)
+    geometry_only(!fluid_sums), cells(lmp, command_in, igroup)
 {
   for (int type : {geometry_only ? wall : fluid, wall})
     if (type < 1 || type > atom->ntypes)
@@ -66,7 +65,7 @@ void CellReduce::init()
 {
   if (!geometry_only) init_fluid();
   int flag, cols;
-  ixref = atom->find_custom("xref", flag, cols);
+  ixref = atom->find_custom(CellField::XREF, flag, cols);
   if (flag != 1 || cols != 3) ixref = -1;
   cells.init(walltype);
 }
@@ -82,14 +81,14 @@ void CellReduce::init_fluid()
                "{}: needs per-atom masses: add 'fix cellatoms all property/atom rmass d2_xref 3 "
                "d_aref ghost yes' before read_data",
                command);
-  irho = custom_vector("rho");
-  ipressure = custom_vector("pressure");
+  irho = custom_vector(CellField::RHO);
+  ipressure = custom_vector(CellField::PRESSURE);
   // the wall load comes from pair cell/wall (also as a hybrid sub-style) and from the wall
   // boundary of pair cell/sph (pair_coeff I J wall), when these are defined
-  wallpair = dynamic_cast<PairCellWall *>(force->pair_match("cell/wall", 0));
-  sphpair = dynamic_cast<PairCellSPH *>(force->pair_match("cell/sph", 0));
-  if (wallpair) wallpair->request_wall_load(fluidtype, walltype, command);
-  if (!wallpair && !(sphpair && sphpair->has_wall_boundary()) && measure == TURGOR_WALL)
+  loads.clear();
+  for (CellWallLoad *load : cell_wall_loads(force))
+    if (load->request_wall_load(fluidtype, walltype, command)) loads.push_back(load);
+  if (loads.empty() && measure == TURGOR_WALL)
     error->all(FLERR,
                "{}: turgor wall (the default) needs the wall load from pair_style cell/wall; add "
                "it or use 'turgor sph'",
@@ -141,8 +140,8 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
   const int *type = atom->type;
   const int *mask = atom->mask;
   const int newton_bond = force->newton_bond;
-  double **load = wallpair ? wallpair->wall_load() : nullptr;
-  double **sphload = sphpair ? sphpair->wall_load() : nullptr;
+  std::vector<double **> load;
+  for (const CellWallLoad *l : loads) load.push_back(l->wall_load());
 
   for (int i = 0; i < atom->nlocal; i++) {
     const int c = cellof[i];
@@ -178,7 +177,7 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
     s[WXY] += b[0] * b[1];
     s[WXZ] += b[0] * b[2];
     s[WYZ] += b[1] * b[2];
-    for (double **l : {load, sphload})
+    for (double **l : load)
       if (l) {
         s[LOADVIR] += b[0] * l[i][0] + b[1] * l[i][1] + b[2] * l[i][2];
         s[LOADX] += l[i][0];

@@ -105,7 +105,7 @@ class CellReduce : protected Pointers {
   double turgor(int c) const { return measure == TURGOR_WALL ? wall_turgor(c) : sph_turgor(c); }
   double sph_turgor(int c) const;
   double wall_turgor(int c) const;
-  bool has_wall_load() const { return wallpair != nullptr || sphpair != nullptr; }
+  bool has_wall_load() const { return !loads.empty(); }
   bool wall_measure() const { return measure == TURGOR_WALL; }
   double mean_gt0(int c) const;
   void gyration(int c, double s[6]) const;
@@ -116,8 +116,7 @@ class CellReduce : protected Pointers {
   int irho, ipressure, ixref;
   int measure;
   bool geometry_only;
-  class PairCellWall *wallpair;    // tallies the wall load, nullptr if none
-  class PairCellSPH *sphpair;      // its wall boundary carries the rest of the load, or nullptr
+  std::vector<class CellWallLoad *> loads;    // the pair styles that tally the wall load
   CellRegistry cells;
   std::vector<double> local, total;    // sums per touched cell, totals per home cell
 

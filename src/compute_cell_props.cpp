@@ -12,6 +12,7 @@
 #include "atom.h"
 #include "cell_compat.h"
 #include "cell_reduce.h"
+#include "cell_styles.h"
 #include "cell_water.h"
 #include "comm.h"
 #include "domain.h"
@@ -153,10 +154,7 @@ void ComputeCellProps::init()
                "again",
                size_array_rows, cells->ncell());
   cells->init();
-  turgor.clear();
-  for (int i = 0; i < modify->nfix; i++)
-    if (strcmp(modify->fix[i]->style, "cell/turgor") == 0)
-      turgor.push_back(dynamic_cast<FixCellTurgor *>(modify->fix[i]));
+  turgor = cell_fixes<FixCellTurgor>(modify);
   homes_checked = false;
 }
 

@@ -12,6 +12,7 @@
 #include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_restart.h"
+#include "cell_styles.h"
 #include "cell_triangle.h"
 #include "comm.h"
 #include "domain.h"
@@ -314,7 +315,7 @@ int DihedralCellBending::parse_form(const std::string &name)
 void DihedralCellBending::init_style()
 {
   int flag, cols;
-  ixref = atom->find_custom("xref", flag, cols);
+  ixref = atom->find_custom(CellField::XREF, flag, cols);
   if (ixref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Dihedral style cell/bending needs per-atom reference positions: add "

@@ -13,6 +13,7 @@
 
 #include "cell_kernel.h"
 #include "cell_quantity.h"
+#include "cell_styles.h"
 #include "pair.h"
 #include "pair_cell_sph_boundary.h"
 
@@ -21,7 +22,7 @@
 
 namespace LAMMPS_NS {
 
-class PairCellSPH : public Pair {
+class PairCellSPH : public Pair, public CellWallLoad {
  public:
   PairCellSPH(class LAMMPS *);
   ~PairCellSPH() override;
@@ -39,7 +40,8 @@ class PairCellSPH : public Pair {
   double single(int, int, int, int, double, double, double, double &) override;
   void *extract(const char *, int &) override;
   // the wall boundary's force of each cell's fluid on its wall atoms (owned atoms), or nullptr
-  double **wall_load() const { return walls ? wall.wallload : nullptr; }
+  bool request_wall_load(int, int, const std::string &) override { return has_wall_boundary(); }
+  double **wall_load() const override { return walls ? wall.wallload : nullptr; }
   bool has_wall_boundary() const;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;

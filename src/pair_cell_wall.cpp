@@ -552,7 +552,7 @@ void PairCellWall::unpack_forward_comm(int n, int first, double *buf)
    evaluation on; one pair of types at a time
 ------------------------------------------------------------------------- */
 
-void PairCellWall::request_wall_load(int fluidtype, int walltype, const std::string &who)
+bool PairCellWall::request_wall_load(int fluidtype, int walltype, const std::string &who)
 {
   if (load_wall && (load_fluid != fluidtype || load_wall != walltype))
     error->all(FLERR,
@@ -563,6 +563,7 @@ void PairCellWall::request_wall_load(int fluidtype, int walltype, const std::str
     error->all(FLERR, "{}: the wall load needs molecule (cell) IDs: use atom_style angle", who);
   load_fluid = fluidtype;
   load_wall = walltype;
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -7,6 +7,7 @@
 #ifndef LMP_PAIR_CELL_WALL_H
 #define LMP_PAIR_CELL_WALL_H
 
+#include "cell_styles.h"
 #include "pair.h"
 
 #include <array>
@@ -15,7 +16,7 @@
 
 namespace LAMMPS_NS {
 
-class PairCellWall : public Pair {
+class PairCellWall : public Pair, public CellWallLoad {
  public:
   PairCellWall(class LAMMPS *);
   ~PairCellWall() override;
@@ -39,8 +40,8 @@ class PairCellWall : public Pair {
 
   // per-atom force on the wall atoms from the fluid atoms of the same cell (molecule), tallied on
   // every force evaluation after a request; the request lasts until the next init
-  void request_wall_load(int fluidtype, int walltype, const std::string &who);
-  double **wall_load() const { return load; }
+  bool request_wall_load(int fluidtype, int walltype, const std::string &who) override;
+  double **wall_load() const override { return load; }
 
   enum Term {
     REPULSION = 1 << 0,

@@ -1,0 +1,64 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellsph - SPH-DEM plant cells for LAMMPS
+   The contracts between cellsph's styles: the names of the per-atom fields they share, the wall
+   load that the pair styles tally for the per-cell sums (cell_reduce.h), and a typed search for a
+   style among the defined fixes. A style that offers or uses one of these includes this header,
+   not the other style's.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CELL_STYLES_H
+#define LMP_CELL_STYLES_H
+
+#include "fix.h"
+#include "force.h"
+#include "modify.h"
+#include "pair.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// per-atom fields (fix property/atom names without their d_/d2_ prefix)
+namespace CellField {
+  constexpr const char *XREF = "xref";            // a wall atom's reference position (3 values)
+  constexpr const char *AREF = "aref";            // a wall atom's reference area
+  constexpr const char *RHO = "rho";              // a fluid atom's SPH density
+  constexpr const char *PRESSURE = "pressure";    // a fluid atom's SPH pressure
+  constexpr const char *H = "h";                  // a fluid atom's smoothing length (adaptive h)
+  constexpr const char *OMEGA = "omega";          // its grad-h correction
+}    // namespace CellField
+
+// a pair style that tallies the force of each cell's fluid on its wall atoms (doc/model.md §5.3)
+class CellWallLoad {
+ public:
+  virtual ~CellWallLoad() = default;
+  // start tallying the load of fluidtype on walltype on every force evaluation until the next
+  // init; false if this style carries no wall load (pair cell/sph without a wall boundary)
+  virtual bool request_wall_load(int fluidtype, int walltype, const std::string &who) = 0;
+  // the load on each owned atom at the last evaluation, or nullptr
+  virtual double **wall_load() const = 0;
+};
+
+// the pair styles (also hybrid sub-styles) that carry a wall load, in a fixed order
+inline std::vector<CellWallLoad *> cell_wall_loads(Force *force)
+{
+  std::vector<CellWallLoad *> loads;
+  for (const char *style : {"cell/wall", "cell/sph"})
+    if (auto *load = dynamic_cast<CellWallLoad *>(force->pair_match(style, 0)))
+      loads.push_back(load);
+  return loads;
+}
+
+// every defined fix of class T, in the order of definition
+template <class T> std::vector<T *> cell_fixes(Modify *modify)
+{
+  std::vector<T *> found;
+  for (int i = 0; i < modify->nfix; i++)
+    if (auto *fix = dynamic_cast<T *>(modify->fix[i])) found.push_back(fix);
+  return found;
+}
+
+}    // namespace LAMMPS_NS
+
+#endif
