@@ -129,118 +129,157 @@ void CellReduce::reduce(const double *bond_gt0, std::vector<double> *triangles,
   local.assign(NCOLUMN * cells.touched().size(), 0.0);
   if (triangles) triangles->clear();
   if (corners) corners->clear();
+  loadnow.clear();
+  for (const CellWallLoad *l : loads) loadnow.push_back(l->wall_load());
 
-  double **x = atom->x;
-  const double *rmass = atom->rmass;
-  const double *rho = geometry_only ? nullptr : atom->dvector[irho];
-  const double *pressure = geometry_only ? nullptr : atom->dvector[ipressure];
-  double **xref = ixref >= 0 ? atom->darray[ixref] : nullptr;
-  const tagint *tag = atom->tag;
-  const tagint *molecule = atom->molecule;
   const int *type = atom->type;
-  const int *mask = atom->mask;
-  const int newton_bond = force->newton_bond;
-  std::vector<double **> load;
-  for (const CellWallLoad *l : loads) load.push_back(l->wall_load());
-
   for (int i = 0; i < atom->nlocal; i++) {
     const int c = cellof[i];
     if (c < 0) continue;
-    const double *ref = cells.reference(c);
     double *s = &local[NCOLUMN * cells.slot(c)];
-
     if (type[i] == fluidtype) {
-      if (geometry_only) continue;
-      if (!(rho[i] > 0.0)) {
-        s[BADRHO] += 1.0;
-        continue;
-      }
-      const double vol = rmass[i] / rho[i];
-      s[MASS] += rmass[i];
-      s[FLUIDVOL] += vol;
-      s[PRESSUREVOL] += pressure[i] * vol;
-      s[NFLUID] += 1.0;
+      if (!geometry_only) add_fluid(i, s);
       continue;
     }
     if (type[i] != walltype) continue;
-
     double b[3];
-    domain->unmap(x[i], atom->image[i], b);
-    for (int d = 0; d < 3; d++) b[d] -= ref[d];
-    s[NWALL] += 1.0;
-    s[WX] += b[0];
-    s[WY] += b[1];
-    s[WZ] += b[2];
-    s[WXX] += b[0] * b[0];
-    s[WYY] += b[1] * b[1];
-    s[WZZ] += b[2] * b[2];
-    s[WXY] += b[0] * b[1];
-    s[WXZ] += b[0] * b[2];
-    s[WYZ] += b[1] * b[2];
-    for (double **l : load)
-      if (l) {
-        s[LOADVIR] += b[0] * l[i][0] + b[1] * l[i][1] + b[2] * l[i][2];
-        s[LOADX] += l[i][0];
-        s[LOADY] += l[i][1];
-        s[LOADZ] += l[i][2];
-      }
-
-    for (int m = 0; atom->num_angle && m < atom->num_angle[i]; m++) {
-      if (atom->angle_atom2[i][m] != tag[i] || atom->angle_type[i][m] <= 0) continue;
-      int ia = atom->map(atom->angle_atom1[i][m]);
-      int ic = atom->map(atom->angle_atom3[i][m]);
-      if (ia < 0 || ic < 0)
-        error->one(FLERR, "{}: atoms of wall triangle {} {} {} missing on rank {}", command,
-                   atom->angle_atom1[i][m], tag[i], atom->angle_atom3[i][m], comm->me);
-      ia = domain->closest_image(i, ia);
-      ic = domain->closest_image(i, ic);
-      double a[3], cc[3], ab[3], ac[3];
-      for (int d = 0; d < 3; d++) {
-        a[d] = b[d] + x[ia][d] - x[i][d];
-        cc[d] = b[d] + x[ic][d] - x[i][d];
-        ab[d] = b[d] - a[d];
-        ac[d] = cc[d] - a[d];
-      }
-      // 6 V = sum a . (b x c) over outward triangles (divergence theorem, doc/model.md §5.2)
-      s[VOLUME6] += a[0] * (b[1] * cc[2] - b[2] * cc[1]) + a[1] * (b[2] * cc[0] - b[0] * cc[2]) +
-          a[2] * (b[0] * cc[1] - b[1] * cc[0]);
-      // 2 A = sum |(b - a) x (c - a)|
-      const double area2 = cross_norm(ab, ac);
-      s[AREA2] += area2;
-      // exposed area: the triangles with all three corners in the surface group (doc/model.md §5.8)
-      if (surfacebit && (mask[i] & mask[ia] & mask[ic] & surfacebit)) s[SURFAREA2] += area2;
-      s[NTRI] += 1.0;
-      if (triangles)
-        triangles->insert(triangles->end(),
-                          {(double) c, a[0], a[1], a[2], b[0], b[1], b[2], cc[0], cc[1], cc[2]});
-      if (corners)
-        corners->insert(corners->end(), {atom->angle_atom1[i][m], tag[i], atom->angle_atom3[i][m]});
-      if (xref) {
-        double u[3] = {xref[ia][0] - xref[i][0], xref[ia][1] - xref[i][1],
-                       xref[ia][2] - xref[i][2]};
-        double w[3] = {xref[ic][0] - xref[i][0], xref[ic][1] - xref[i][1],
-                       xref[ic][2] - xref[i][2]};
-        domain->minimum_image(u[0], u[1], u[2]);
-        domain->minimum_image(w[0], w[1], w[2]);
-        // 2 A_ref = |(xref_a - xref_b) x (xref_c - xref_b)|
-        s[REFAREA2] += cross_norm(u, w);
-      }
-    }
-
-    for (int m = 0; bond_gt0 && m < atom->num_bond[i]; m++) {
-      const int btype = atom->bond_type[i][m];
-      const tagint partner = atom->bond_atom[i][m];
-      if (btype <= 0 || (!newton_bond && partner < tag[i])) continue;
-      const int j = atom->map(partner);
-      if (j < 0 || molecule[j] != molecule[i]) continue;
-      s[GT0] += bond_gt0[btype];
-      s[NBOND] += 1.0;
-    }
+    add_wall(i, c, s, b);
+    add_triangles(i, c, b, s, triangles, corners);
+    if (bond_gt0) add_bonds(i, bond_gt0, s);
   }
 
   cells.reduce(NCOLUMN, local, total);
+  check_cells();
+}
 
-  // the first bad cell (home ranks) stops every rank
+/* ----------------------------------------------------------------------
+   fluid atom i's mass, volume and pressure in its cell's sums s
+------------------------------------------------------------------------- */
+
+void CellReduce::add_fluid(int i, double *s)
+{
+  const double *rmass = atom->rmass;
+  const double *rho = atom->dvector[irho];
+  const double *pressure = atom->dvector[ipressure];
+  if (!(rho[i] > 0.0)) {
+    s[BADRHO] += 1.0;
+    return;
+  }
+  const double vol = rmass[i] / rho[i];
+  s[MASS] += rmass[i];
+  s[FLUIDVOL] += vol;
+  s[PRESSUREVOL] += pressure[i] * vol;
+  s[NFLUID] += 1.0;
+}
+
+/* ----------------------------------------------------------------------
+   wall atom i of cell c: its position b (unwrapped, relative to the cell's reference point), its
+   moments and the wall load on it in the cell's sums s
+------------------------------------------------------------------------- */
+
+void CellReduce::add_wall(int i, int c, double *s, double b[3])
+{
+  const double *ref = cells.reference(c);
+  domain->unmap(atom->x[i], atom->image[i], b);
+  for (int d = 0; d < 3; d++) b[d] -= ref[d];
+  s[NWALL] += 1.0;
+  s[WX] += b[0];
+  s[WY] += b[1];
+  s[WZ] += b[2];
+  s[WXX] += b[0] * b[0];
+  s[WYY] += b[1] * b[1];
+  s[WZZ] += b[2] * b[2];
+  s[WXY] += b[0] * b[1];
+  s[WXZ] += b[0] * b[2];
+  s[WYZ] += b[1] * b[2];
+  for (double **l : loadnow)
+    if (l) {
+      s[LOADVIR] += b[0] * l[i][0] + b[1] * l[i][1] + b[2] * l[i][2];
+      s[LOADX] += l[i][0];
+      s[LOADY] += l[i][1];
+      s[LOADZ] += l[i][2];
+    }
+}
+
+/* ----------------------------------------------------------------------
+   the wall triangles whose middle atom is wall atom i (at b) in the sums s of its cell c, and in
+   triangles/corners if given
+------------------------------------------------------------------------- */
+
+void CellReduce::add_triangles(int i, int c, const double *b, double *s,
+                               std::vector<double> *triangles, std::vector<tagint> *corners)
+{
+  double **x = atom->x;
+  double **xref = ixref >= 0 ? atom->darray[ixref] : nullptr;
+  const tagint *tag = atom->tag;
+  const int *mask = atom->mask;
+  for (int m = 0; atom->num_angle && m < atom->num_angle[i]; m++) {
+    if (atom->angle_atom2[i][m] != tag[i] || atom->angle_type[i][m] <= 0) continue;
+    int ia = atom->map(atom->angle_atom1[i][m]);
+    int ic = atom->map(atom->angle_atom3[i][m]);
+    if (ia < 0 || ic < 0)
+      error->one(FLERR, "{}: atoms of wall triangle {} {} {} missing on rank {}", command,
+                 atom->angle_atom1[i][m], tag[i], atom->angle_atom3[i][m], comm->me);
+    ia = domain->closest_image(i, ia);
+    ic = domain->closest_image(i, ic);
+    double a[3], cc[3], ab[3], ac[3];
+    for (int d = 0; d < 3; d++) {
+      a[d] = b[d] + x[ia][d] - x[i][d];
+      cc[d] = b[d] + x[ic][d] - x[i][d];
+      ab[d] = b[d] - a[d];
+      ac[d] = cc[d] - a[d];
+    }
+    // 6 V = sum a . (b x c) over outward triangles (divergence theorem, doc/model.md §5.2)
+    s[VOLUME6] += a[0] * (b[1] * cc[2] - b[2] * cc[1]) + a[1] * (b[2] * cc[0] - b[0] * cc[2]) +
+        a[2] * (b[0] * cc[1] - b[1] * cc[0]);
+    // 2 A = sum |(b - a) x (c - a)|
+    const double area2 = cross_norm(ab, ac);
+    s[AREA2] += area2;
+    // exposed area: the triangles with all three corners in the surface group (doc/model.md §5.8)
+    if (surfacebit && (mask[i] & mask[ia] & mask[ic] & surfacebit)) s[SURFAREA2] += area2;
+    s[NTRI] += 1.0;
+    if (triangles)
+      triangles->insert(triangles->end(),
+                        {(double) c, a[0], a[1], a[2], b[0], b[1], b[2], cc[0], cc[1], cc[2]});
+    if (corners)
+      corners->insert(corners->end(), {atom->angle_atom1[i][m], tag[i], atom->angle_atom3[i][m]});
+    if (xref) {
+      double u[3] = {xref[ia][0] - xref[i][0], xref[ia][1] - xref[i][1], xref[ia][2] - xref[i][2]};
+      double w[3] = {xref[ic][0] - xref[i][0], xref[ic][1] - xref[i][1], xref[ic][2] - xref[i][2]};
+      domain->minimum_image(u[0], u[1], u[2]);
+      domain->minimum_image(w[0], w[1], w[2]);
+      // 2 A_ref = |(xref_a - xref_b) x (xref_c - xref_b)|
+      s[REFAREA2] += cross_norm(u, w);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   G t0 of wall atom i's bonds inside its cell (each bond once) in the sums s
+------------------------------------------------------------------------- */
+
+void CellReduce::add_bonds(int i, const double *bond_gt0, double *s)
+{
+  const tagint *tag = atom->tag;
+  const tagint *molecule = atom->molecule;
+  const int newton_bond = force->newton_bond;
+  for (int m = 0; m < atom->num_bond[i]; m++) {
+    const int btype = atom->bond_type[i][m];
+    const tagint partner = atom->bond_atom[i][m];
+    if (btype <= 0 || (!newton_bond && partner < tag[i])) continue;
+    const int j = atom->map(partner);
+    if (j < 0 || molecule[j] != molecule[i]) continue;
+    s[GT0] += bond_gt0[btype];
+    s[NBOND] += 1.0;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the first bad cell (home ranks) stops every rank
+------------------------------------------------------------------------- */
+
+void CellReduce::check_cells()
+{
   int bad = ncell();
   std::string why;
   for (int c : cells.home_cells()) {

@@ -117,10 +117,17 @@ class CellReduce : protected Pointers {
   int measure;
   bool geometry_only;
   std::vector<class CellWallLoad *> loads;    // the pair styles that tally the wall load
+  std::vector<double **> loadnow;             // their loads at this reduce()
   CellRegistry cells;
   std::vector<double> local, total;    // sums per touched cell, totals per home cell
 
   void init_fluid();
+  void add_fluid(int i, double *s);
+  void add_wall(int i, int c, double *s, double b[3]);
+  void add_triangles(int i, int c, const double *b, double *s, std::vector<double> *triangles,
+                     std::vector<tagint> *corners);
+  void add_bonds(int i, const double *bond_gt0, double *s);
+  void check_cells();
   int custom_vector(const char *name) const;
 };
 

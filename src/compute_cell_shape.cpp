@@ -30,6 +30,34 @@ using MathConst::MY_PI;
 // principal lengths closer than this fraction of the largest count as equal (plane principal)
 static constexpr double DEGENERATE = 1e-9;
 
+namespace {
+
+// the section plane through the principal axes of a volume with central second moments central:
+// normal along the shortest axis, e1 along the longest; where the two shortest are equal to
+// round-off (a spheroid, a sphere) the normal is the part of the z axis (y if z lies along e1)
+// normal to e1, so that every rank and run picks the same plane
+void principal_plane(const Eigen::Matrix3d &central, Eigen::Vector3d &n, Eigen::Vector3d &e1,
+                     Eigen::Vector3d &e2)
+{
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(central);
+  const Eigen::Vector3d &lambda = eig.eigenvalues();
+  e1 = eig.eigenvectors().col(2);
+  if (lambda[1] - lambda[0] > DEGENERATE * lambda[2])
+    n = eig.eigenvectors().col(0);
+  else {
+    if (lambda[2] - lambda[0] <= DEGENERATE * lambda[2]) e1 = Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d axis =
+        std::abs(e1[2]) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+    n = (axis - axis.dot(e1) * e1).normalized();
+  }
+  int big = 0;
+  n.cwiseAbs().maxCoeff(&big);
+  if (n[big] < 0.0) n = -n;
+  e2 = n.cross(e1);
+}
+
+}    // namespace
+
 /* ---------------------------------------------------------------------- */
 
 ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
@@ -198,25 +226,7 @@ void ComputeCellShape::measure(int h, double *row)
   // the plane: normal n, in-plane axes e1, e2 with e1 x e2 = n
   Eigen::Vector3d n, e1, e2;
   if (plane == PLANE_PRINCIPAL) {
-    // normal along the shortest principal axis of the volume, e1 along the longest; where the two
-    // shortest are equal to round-off (a spheroid, a sphere) the normal is the part of the z axis
-    // (y if z lies along e1) normal to e1, so that every rank and run picks the same plane
-    const Eigen::Matrix3d central = second - volume * centre * centre.transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(central);
-    const Eigen::Vector3d &lambda = eig.eigenvalues();
-    e1 = eig.eigenvectors().col(2);
-    if (lambda[1] - lambda[0] > DEGENERATE * lambda[2])
-      n = eig.eigenvectors().col(0);
-    else {
-      if (lambda[2] - lambda[0] <= DEGENERATE * lambda[2]) e1 = Eigen::Vector3d::UnitX();
-      const Eigen::Vector3d axis =
-          std::abs(e1[2]) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
-      n = (axis - axis.dot(e1) * e1).normalized();
-    }
-    int big = 0;
-    n.cwiseAbs().maxCoeff(&big);
-    if (n[big] < 0.0) n = -n;
-    e2 = n.cross(e1);
+    principal_plane(second - volume * centre * centre.transpose(), n, e1, e2);
   } else if (plane == PLANE_NORMAL) {
     // e1 along the part of the coordinate axis least aligned with n that is normal to n
     n = Eigen::Vector3d(normal[0], normal[1], normal[2]);

@@ -63,6 +63,35 @@ bool hinge(const double *e, const double *u1, const double *u2, Hinge &h)
   return true;
 }
 
+// energy and dE/dtheta of a dihedral with bending modulus kappa at hinge h about its reference h0
+// (flat: theta0 = 0; tanform: form tan, else cos); false where form tan is infinite
+bool bend(double kappa, bool flat, bool tanform, const Hinge &h, const Hinge &h0, double &edihedral,
+          double &dedth)
+{
+  // k = kappa l0^2 / (A1 + A2), reference edge length and triangle areas (doc/model.md §4.2)
+  const double k = 2.0 * kappa * h0.ee / (sqrt(h0.nn1) + sqrt(h0.nn2));
+  const double c0 = flat ? 1.0 : h0.c;
+  const double s0 = flat ? 0.0 : h0.s;
+
+  // 1 - cos(theta - theta0) and sin(theta - theta0)
+  const double omc = 1.0 - h.c * c0 - h.s * s0;
+  const double sin_bend = h.s * c0 - h.c * s0;
+  if (tanform) {
+    const double opc = 2.0 - omc;    // 1 + cos(theta - theta0)
+    if (opc <= 0.0) return false;
+    // E = 2k tan^2((theta - theta0)/2) = 2k (1 - cos)/(1 + cos), dE/dtheta = 4k sin/(1 + cos)^2
+    // (doc/dihedral_cell_bending.md, form tan)
+    edihedral = 2.0 * k * omc / opc;
+    dedth = 4.0 * k * sin_bend / (opc * opc);
+  } else {
+    // E = k (1 - cos(theta - theta0)), dE/dtheta = k sin(theta - theta0)
+    edihedral = k * omc;
+    dedth = k * sin_bend;
+  }
+
+  return true;
+}
+
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -144,31 +173,12 @@ void DihedralCellBending::compute(int eflag, int vflag)
                  "above the longest dihedral span) or the wall is torn",
                  tag[i1], tag[i2], tag[i3], tag[i4]);
 
-    // k = kappa l0^2 / (A1 + A2), reference edge length and triangle areas (doc/model.md §4.2)
-    const double k = 2.0 * kappa[type] * h0.ee / (sqrt(h0.nn1) + sqrt(h0.nn2));
-    const double c0 = reference[type] == FLAT ? 1.0 : h0.c;
-    const double s0 = reference[type] == FLAT ? 0.0 : h0.s;
-
-    // 1 - cos(theta - theta0) and sin(theta - theta0)
-    const double omc = 1.0 - h.c * c0 - h.s * s0;
-    const double sin_bend = h.s * c0 - h.c * s0;
     double edihedral, dedth;
-    if (form[type] == TAN) {
-      const double opc = 2.0 - omc;    // 1 + cos(theta - theta0)
-      if (opc <= 0.0)
-        error->one(FLERR,
-                   "Dihedral cell/bending: dihedral {}-{}-{}-{} is folded flat onto itself "
-                   "(theta - theta0 = pi), where the energy of form tan is infinite",
-                   tag[i1], tag[i2], tag[i3], tag[i4]);
-      // E = 2k tan^2((theta - theta0)/2) = 2k (1 - cos)/(1 + cos), dE/dtheta = 4k sin/(1 + cos)^2
-      // (doc/dihedral_cell_bending.md, form tan)
-      edihedral = 2.0 * k * omc / opc;
-      dedth = 4.0 * k * sin_bend / (opc * opc);
-    } else {
-      // E = k (1 - cos(theta - theta0)), dE/dtheta = k sin(theta - theta0)
-      edihedral = k * omc;
-      dedth = k * sin_bend;
-    }
+    if (!bend(kappa[type], reference[type] == FLAT, form[type] == TAN, h, h0, edihedral, dedth))
+      error->one(FLERR,
+                 "Dihedral cell/bending: dihedral {}-{}-{}-{} is folded flat onto itself "
+                 "(theta - theta0 = pi), where the energy of form tan is infinite",
+                 tag[i1], tag[i2], tag[i3], tag[i4]);
 
     // dtheta/dx_a = -|e| n1 / |n1|^2, dtheta/dx_d = -|e| n2 / |n2|^2; the edge atoms take
     // -(1 - s) and -s of them, s the position of a (d) projected on the edge, so that the forces
