@@ -27,6 +27,7 @@ namespace CellField {
   constexpr const char *PRESSURE = "pressure";    // a fluid atom's SPH pressure
   constexpr const char *H = "h";                  // a fluid atom's smoothing length (adaptive h)
   constexpr const char *OMEGA = "omega";          // its grad-h correction
+  constexpr const char *FIX = "cellsph";          // the fix property/atom holding rho to omega
 }    // namespace CellField
 
 // a pair style that tallies the force of each cell's fluid on its wall atoms (doc/model.md §5.3)

@@ -184,6 +184,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
   void unsolvable(int, double) const;
   // pair_coeff arrays and the checks of init_style (pair_cell_sph_settings.cpp)
   void allocate();
+  void create_fields();
   void find_fields();
   void check_masses();
   double run_hcap(int) const;

@@ -11,6 +11,7 @@
 #include "cell_compat.h"
 #include "cell_limits.h"
 #include "cell_params.h"
+#include "cell_styles.h"
 #include "cell_wall_triangles.h"
 #include "cell_water.h"
 #include "comm.h"
@@ -18,6 +19,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -162,6 +164,7 @@ void PairCellSPH::settings(int narg, char **arg)
     }
     iarg += 2;
   }
+  create_fields();
 }
 
 /* ----------------------------------------------------------------------
@@ -287,12 +290,30 @@ void PairCellSPH::coeff(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
+   the per-atom vectors of cell/sph (cell_styles.h) as fix cellsph (property/atom, with ghosts) when
+   an input has declared none of them, at pair_style and, after read_restart, at the first run (where
+   the fix takes its values from the restart file); an input's own 'fix cellsph all property/atom
+   d_rho d_pressure ...' before read_data keeps working
+------------------------------------------------------------------------- */
+
+void PairCellSPH::create_fields()
+{
+  int flag, cols;
+  for (const char *name : {CellField::RHO, CellField::PRESSURE, CellField::H, CellField::OMEGA})
+    if (atom->find_custom(name, flag, cols) >= 0) return;
+  if (modify->find_fix(CellField::FIX) >= 0) return;
+  modify->add_fix(fmt::format("{} all property/atom d_{} d_{} d_{} d_{} ghost yes", CellField::FIX,
+                              CellField::RHO, CellField::PRESSURE, CellField::H, CellField::OMEGA));
+}
+
+/* ----------------------------------------------------------------------
    the per-atom data pair cell/sph needs: rmass, the custom vectors rho and pressure (and h and
    omega with per-atom h)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::find_fields()
 {
+  create_fields();
   if (!atom->rmass_flag)
     error->all(FLERR,
                "Pair style cell/sph needs per-atom masses (rmass), which atom_style {} does not "
@@ -300,12 +321,12 @@ void PairCellSPH::find_fields()
                "read_data",
                atom->atom_style);
   int flag, cols;
-  irho = atom->find_custom("rho", flag, cols);
+  irho = atom->find_custom(CellField::RHO, flag, cols);
   if (irho < 0 || flag != 1 || cols != 0)
     error->all(FLERR,
                "Pair style cell/sph needs the per-atom vector rho: add 'fix cellsph all "
                "property/atom d_rho d_pressure ghost yes' before read_data");
-  ipressure = atom->find_custom("pressure", flag, cols);
+  ipressure = atom->find_custom(CellField::PRESSURE, flag, cols);
   if (ipressure < 0 || flag != 1 || cols != 0)
     error->all(FLERR,
                "Pair style cell/sph needs the per-atom vector pressure: add 'fix cellsph all "
@@ -313,8 +334,8 @@ void PairCellSPH::find_fields()
 
   if (hmode != HFIXED) {
     int hflag, hcols, oflag, ocols;
-    ih = atom->find_custom("h", hflag, hcols);
-    iomega = atom->find_custom("omega", oflag, ocols);
+    ih = atom->find_custom(CellField::H, hflag, hcols);
+    iomega = atom->find_custom(CellField::OMEGA, oflag, ocols);
     if (ih < 0 || hflag != 1 || hcols != 0 || iomega < 0 || oflag != 1 || ocols != 0)
       error->all(FLERR,
                  "Pair style cell/sph: h {} needs the per-atom vectors h and omega: add 'fix "
