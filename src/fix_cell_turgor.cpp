@@ -12,7 +12,6 @@
 #include "bond.h"
 #include "cell_args.h"
 #include "cell_compat.h"
-#include "cell_junctions.h"
 #include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_reduce.h"
@@ -20,6 +19,7 @@
 #include "cell_water.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_cell_turgor_junctions.h"
 #include "force.h"
 #include "group.h"
 #include "input.h"
@@ -169,7 +169,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
   drive.check(osmotic_model.tref);
   osmotic_model.check();
-  if (accel.automatic && drive.kind == CellDrive::CURVE)
+  if (accel.automatic && drive.kind == TurgorDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
                "flux that the mechanics could delay)");
@@ -181,7 +181,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
                  "parameter file: give 'file name' with that key");
     lcc = CellQuantity{file_lcc, "", -1};
   }
-  if (exchanging && drive.kind == CellDrive::CURVE)
+  if (exchanging && drive.kind == TurgorDrive::CURVE)
     error->all(FLERR,
                "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
                "cell's water)");
@@ -191,8 +191,8 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
   if (exchanging) {
     // bond type 0 too is out of range there
-    junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
-    network = std::make_unique<CellNetwork>(world);
+    junctions = std::make_unique<TurgorJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
+    network = std::make_unique<TurgorNetwork>(world);
   }
 
   vector_flag = 1;
@@ -379,15 +379,15 @@ void FixCellTurgor::evaluate(bool transfer)
   // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
   // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
   const bigint next = update->ntimestep + 1;
-  const CellAccel::Cycle cycle =
+  const TurgorAccel::Cycle cycle =
       accel.cycle(next / every + (transfer ? 0 : 1), transfer, offset_time(), every * update->dt);
   const double dtw = cycle.sealed ? 0.0 : accel.value * every * update->dt;
   std::vector<double> scale(home.size(), 0.0);
   double moved = 0.0, first_accel = HUGE_VAL;
   // exchange: per home cell psi, dpsi/dM, rate and z for the network, and M
   const size_t nnet = junctions ? home.size() : 0;
-  CellNetwork::Cells net{std::vector<double>(nnet), std::vector<double>(nnet),
-                         std::vector<double>(nnet), std::vector<double>(nnet)};
+  TurgorNetwork::Cells net{std::vector<double>(nnet), std::vector<double>(nnet),
+                           std::vector<double>(nnet), std::vector<double>(nnet)};
   std::vector<double> net_mass(nnet);
   max_imbalance = max_stiffness = 0.0;
   failure = Failure{cells->ncell(), ""};
@@ -398,7 +398,7 @@ void FixCellTurgor::evaluate(bool transfer)
   // (the curve's variable reads f_ID[2] at the transfer's end; the fix's clock moves there when
   // the transfer is applied)
   const double start = physical_time;
-  drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
+  drive.evaluate(physical_time, drive.kind == TurgorDrive::CURVE && transfer ? dtw : 0.0);
   physical_time = start;
 
   // each home cell's flux turgor and conductance, the cell checked and its M0 and S set
@@ -408,7 +408,7 @@ void FixCellTurgor::evaluate(bool transfer)
     const tagint id = cells->id(c);
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
-    CellTurgorState::Cell &s = state[id];
+    TurgorState::Cell &s = state[id];
     const double turgor = turgors[h] = flux_turgor(c, s, transfer);
     if (cells->get(c, CellReduce::NFLUID) == 0.0) {
       failure = Failure{c,
@@ -439,7 +439,7 @@ void FixCellTurgor::evaluate(bool transfer)
       double sums[2] = {0.0, 0.0}, all[2];
       for (int h = 0; h < (int) home.size(); h++) {
         const int c = home[h];
-        const CellTurgorState::Cell &s = state[cells->id(c)];
+        const TurgorState::Cell &s = state[cells->id(c)];
         const double mass = cells->mass(c);
         const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, nullptr);
         const double area = cells->area(c), surface = cells->surface_area(c);
@@ -463,18 +463,18 @@ void FixCellTurgor::evaluate(bool transfer)
     const tagint id = cells->id(c);
     const double mass = cells->mass(c);
     const double area = cells->area(c);
-    CellTurgorState::Cell &s = state[id];
+    TurgorState::Cell &s = state[id];
     const double turgor = turgors[h];
     double slope;
     const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, &slope);
     // psi_cell = P_T - pi (doc/model.md §5.1)
     const double psi_cell = turgor - pi;
-    const CellDrive::Flux flux =
+    const TurgorDrive::Flux flux =
         drive.flux(psi_cell, rhow * lpt, area, cells->surface_area(c), mass, s.mass0, dtw);
     const double conductance = flux.conductance, rate = flux.rate;
     s.psi_surface = flux.psi_surface;
     s.rate = rate;
-    if (drive.kind == CellDrive::AIR) {
+    if (drive.kind == TurgorDrive::AIR) {
       air_sums[0] -= rate;
       air_sums[1] += drive.exposed_area(area, cells->surface_area(c));
     }
@@ -482,17 +482,18 @@ void FixCellTurgor::evaluate(bool transfer)
     const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
     const double relax = conductance * std::max(0.0, stiffness);
     const double z = dtw * relax;
-    if (drive.kind != CellDrive::CURVE)
+    if (drive.kind != TurgorDrive::CURVE)
       max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
     max_stiffness = std::max(max_stiffness, z);
-    if (drive.kind != CellDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
+    if (drive.kind != TurgorDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
     if (accel.pending)
-      first_accel = std::min(first_accel,
-                             accel.first(conductance, slope,
-                                         CellAccel::modulus(kfluid + cells->sph_turgor(c),
-                                                            gt0.empty() ? 0.0 : cells->mean_gt0(c),
-                                                            cells->ref_area(c), cells->area(c)),
-                                         mass, offset_time()));
+      first_accel =
+          std::min(first_accel,
+                   accel.first(conductance, slope,
+                               TurgorAccel::modulus(kfluid + cells->sph_turgor(c),
+                                                    gt0.empty() ? 0.0 : cells->mean_gt0(c),
+                                                    cells->ref_area(c), cells->area(c)),
+                               mass, offset_time()));
     conductances[h] = conductance;
     if (junctions) {
       // advanced with the network below (doc/model.md §5.13), which needs psi to rise with M
@@ -515,7 +516,7 @@ void FixCellTurgor::evaluate(bool transfer)
 
     // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
     // M = M0 X/X0(t + dtw)
-    const double dmass = drive.kind == CellDrive::CURVE
+    const double dmass = drive.kind == TurgorDrive::CURVE
         ? drive.target * s.mass0 - mass
         : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
     if (!(mass + dmass > 0.0)) {
@@ -540,7 +541,7 @@ void FixCellTurgor::evaluate(bool transfer)
   first_accel = -all_most[2];
   busiest = all_most[3];
   exposed_flux = exposed_area = 0.0;
-  if (drive.kind == CellDrive::AIR) {
+  if (drive.kind == TurgorDrive::AIR) {
     double all_air[2];
     MPI_Allreduce(air_sums, all_air, 2, MPI_DOUBLE, MPI_SUM, world);
     exposed_area = all_air[1];
@@ -593,16 +594,16 @@ void FixCellTurgor::evaluate(bool transfer)
    and conductance (with the exchange's) for accel auto; the wall edges measured
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::control(const CellAccel::Cycle &cycle, bool limit, bool transfer,
+void FixCellTurgor::control(const TurgorAccel::Cycle &cycle, bool limit, bool transfer,
                             const std::vector<double> &turgors,
                             const std::vector<double> &conductances)
 {
   const std::vector<int> &home = cells->home_cells();
-  CellAccel::Home in{{}, turgors, {}, {}, conductances};
+  TurgorAccel::Home in{{}, turgors, {}, {}, conductances};
   std::vector<double> between;
   if (junctions) network->conductances(between);
   for (int h = 0; h < (int) home.size() && accel.automatic; h++) {
-    CellTurgorState::Cell &s = state[cells->id(home[h])];
+    TurgorState::Cell &s = state[cells->id(home[h])];
     in.probe.push_back(s.probe);
     in.mass.push_back(cells->mass(home[h]));
     in.rate.push_back(s.rate);
@@ -618,8 +619,8 @@ void FixCellTurgor::control(const CellAccel::Cycle &cycle, bool limit, bool tran
    area per bond (the bond type's A, or the pair's from a junction areas file).
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
-                             std::vector<double> &dmass)
+void FixCellTurgor::exchange(const TurgorNetwork::Cells &in, bool transfer, double dtw,
+                             double factor, std::vector<double> &dmass)
 {
   CellRegistry &registry = cells->registry();
   const std::vector<int> &home = registry.home_cells();
@@ -628,7 +629,7 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
   check_lcc(l, fmt::format(" (step {})", update->ntimestep));
   // the junctions set up again when they were counted again or the home ranks changed (init)
   if (counted || network_stale) {
-    std::vector<CellNetwork::Edge> edges;
+    std::vector<TurgorNetwork::Edge> edges;
     for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, rhow * j.area});
     network->set_edges(home, edges, [&](int c) { return registry.home(c); });
     const int mine = network->crossing();
@@ -644,7 +645,7 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
   for (int h = 0; h < (int) home.size(); h++) state[cells->id(home[h])].rate += rate[h];
   if (!transfer) return;
 
-  CellNetwork::Change change;
+  TurgorNetwork::Change change;
   if (!network->step(dtw, change))
     error->all(
         FLERR,
@@ -673,7 +674,7 @@ double FixCellTurgor::offset_time() const
    transfer steps only, so a run split in two continues as one
 ------------------------------------------------------------------------- */
 
-double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
+double FixCellTurgor::flux_turgor(int c, TurgorState::Cell &s, bool advance)
 {
   const double psph = cells->sph_turgor(c);
   s.turgor = psph;
@@ -691,7 +692,7 @@ double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
    turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
-bool FixCellTurgor::check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi,
+bool FixCellTurgor::check_limit(int c, TurgorState::Cell &s, double turgor, double pi,
                                 double demand)
 {
   const double gt = cells->mean_gt0(c);
@@ -734,7 +735,7 @@ bool FixCellTurgor::check_limit(int c, CellTurgorState::Cell &s, double turgor, 
 
 bool FixCellTurgor::turgor(tagint cell, double &pt) const
 {
-  const CellTurgorState::Cell *s = state.find(cell);
+  const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
   pt = s->turgor;
   return true;
@@ -747,7 +748,7 @@ bool FixCellTurgor::turgor(tagint cell, double &pt) const
 
 bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 {
-  const CellTurgorState::Cell *s = state.find(cell);
+  const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
   pi = osmotic_model.pressure(s->pi0, s->mass0, s->solids, mass,
                               drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref,
@@ -762,7 +763,7 @@ bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 
 bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 {
-  const CellTurgorState::Cell *s = state.find(cell);
+  const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
   w.moisture = s->solids > 0.0 ? mass / s->solids : 0.0;
   w.relative = s->mass0 > 0.0 ? mass / s->mass0 : 0.0;
@@ -786,14 +787,25 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {
-      water_moved,         physical_time,   (double) cells->ncell(),
-      max_imbalance,       max_stiffness,   drive.temperature,
-      drive.mass_transfer, accel.value,     accel.lag_estimate,
-      accel.lag_error,     water_exchanged, exchange_net,
-      exchange_stiffness,  busiest,         drive.kind == CellDrive::AIR ? drive.temperature : 0.0,
-      exposed_flux,        exposed_area,    (double) crossing,
-      accel.edge};
+  const double values[] = {water_moved,
+                           physical_time,
+                           (double) cells->ncell(),
+                           max_imbalance,
+                           max_stiffness,
+                           drive.temperature,
+                           drive.mass_transfer,
+                           accel.value,
+                           accel.lag_estimate,
+                           accel.lag_error,
+                           water_exchanged,
+                           exchange_net,
+                           exchange_stiffness,
+                           busiest,
+                           drive.kind == TurgorDrive::AIR ? drive.temperature : 0.0,
+                           exposed_flux,
+                           exposed_area,
+                           (double) crossing,
+                           accel.edge};
   return values[n];
 }
 
@@ -813,7 +825,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
   if (key == "accel") {
     const int used = 1 + accel.parse(narg - 1, &arg[1], "Fix_modify cell/turgor");
-    if (accel.automatic && drive.kind == CellDrive::CURVE)
+    if (accel.automatic && drive.kind == TurgorDrive::CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
     // a transfer evaluated again at setup (setup) keeps the new accel
     accel_saved = accel.save();
@@ -875,7 +887,7 @@ void FixCellTurgor::restart(char *buf)
   if (version >= 7) accel.read_edges(&list[12]);
   state.clear();
   bool other_pi0 = false, other_solids = false;
-  const int nvalues = CellTurgorState::restart_values(version);
+  const int nvalues = TurgorState::restart_values(version);
   for (int k = 0; k < n; k++) {
     const double *v = &list[1 + restart_globals(version) + nvalues * k];
     // version 1 files written before the offset was stored had 4 values per cell: caught here
@@ -886,8 +898,8 @@ void FixCellTurgor::restart(char *buf)
                  version, k + 1, n, v[0], v[3]);
     // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
     const double solids = version >= 3 ? v[5] : 0.0;
-    CellTurgorState::Cell cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
-    if (adapted) std::copy(v + 6, v + 6 + CellAccel::NPROBE, cell.probe);
+    TurgorState::Cell cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
+    if (adapted) std::copy(v + 6, v + 6 + TurgorAccel::NPROBE, cell.probe);
     // every rank holds every cell until init() keeps its home cells
     state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;

@@ -7,13 +7,13 @@
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
-#include "cell_accel.h"
-#include "cell_drive.h"
-#include "cell_network.h"
-#include "cell_osmotic.h"
 #include "cell_quantity.h"
-#include "cell_turgor_state.h"
 #include "fix.h"
+#include "fix_cell_turgor_accel.h"
+#include "fix_cell_turgor_drive.h"
+#include "fix_cell_turgor_network.h"
+#include "fix_cell_turgor_osmotic.h"
+#include "fix_cell_turgor_state.h"
 
 #include <memory>
 #include <string>
@@ -21,7 +21,7 @@
 
 namespace LAMMPS_NS {
 
-class CellJunctions;
+class TurgorJunctions;
 class CellReduce;
 class CellRegistry;
 
@@ -69,16 +69,16 @@ class FixCellTurgor : public Fix {
  protected:
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
   double lp, pi0, rhow;
-  CellAccel accel;              // accel, fixed or auto
-  double ea;                    // activation energy of L_P (J/mol)
-  CellOsmotic osmotic_model;    // pi(T, M): solutes, dry solids, GAB; Tref
-  CellDrive drive;              // T and psi_ext, air or a curve: each cell's flux
-  double tau;                   // MD time of the running mean of the offset (s), 0 = 100 N dt
+  TurgorAccel accel;              // accel, fixed or auto
+  double ea;                      // activation energy of L_P (J/mol)
+  TurgorOsmotic osmotic_model;    // pi(T, M): solutes, dry solids, GAB; Tref
+  TurgorDrive drive;              // T and psi_ext, air or a curve: each cell's flux
+  double tau;                     // MD time of the running mean of the offset (s), 0 = 100 N dt
   double bulk;      // fluid bulk modulus K from the 'bulk' keyword, 0 = from pair cell/sph
   double kfluid;    // K in use
   int limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
-  CellTurgorState state;      // per cell, on its home rank
+  TurgorState state;          // per cell, on its home rank
   std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
@@ -94,7 +94,7 @@ class FixCellTurgor : public Fix {
   // the state before that evaluation when it fell on a run's last step, to evaluate it again at
   // the next run's setup: the step (-1: none kept; not in restart files)
   bigint saved = -1;
-  CellAccel::Saved accel_saved{};
+  TurgorAccel::Saved accel_saved{};
   double exchanged_saved = 0.0;
   double busiest;                       // the most cells one rank summed at the last evaluation
   double exposed_flux, exposed_area;    // air: mean vapour flux over the exposed area, the area
@@ -108,8 +108,8 @@ class FixCellTurgor : public Fix {
 
   // exchange: water between cells through their junctions at L_cc (doc/model.md §5.13)
   CellQuantity lcc;
-  std::unique_ptr<CellJunctions> junctions;    // nullptr without 'exchange'
-  std::unique_ptr<CellNetwork> network;
+  std::unique_ptr<TurgorJunctions> junctions;    // nullptr without 'exchange'
+  std::unique_ptr<TurgorNetwork> network;
   double water_exchanged;       // sum over transfers and junctions of |water moved| (kg)
   double exchange_net;          // sum over cells of the exchange's mass change, last transfer (kg)
   double exchange_stiffness;    // largest dt_w g_ij (s_i + s_j) of the last evaluation
@@ -118,17 +118,17 @@ class FixCellTurgor : public Fix {
   bool network_stale = true;    // the network's junctions to set up again (new home ranks)
 
   void evaluate(bool transfer);
-  void control(const CellAccel::Cycle &cycle, bool limit, bool transfer,
+  void control(const TurgorAccel::Cycle &cycle, bool limit, bool transfer,
                const std::vector<double> &turgors, const std::vector<double> &conductances);
   void apply_pending();
   void transfer();
-  void exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
+  void exchange(const TurgorNetwork::Cells &in, bool transfer, double dtw, double factor,
                 std::vector<double> &dmass);
   void check_lp(double value, const std::string &who) const;
   void check_lcc(double value, const std::string &when) const;
   double offset_time() const;
-  bool check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi, double demand);
-  double flux_turgor(int c, CellTurgorState::Cell &s, bool advance);
+  bool check_limit(int c, TurgorState::Cell &s, double turgor, double pi, double demand);
+  double flux_turgor(int c, TurgorState::Cell &s, bool advance);
   double arrhenius_factor(double t) const;    // L_P(T)/L_P (and L_cc), 1 without Ea
   double pair_bulk_modulus();
 };

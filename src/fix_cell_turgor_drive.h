@@ -7,8 +7,8 @@
    them; with cooling, cool() sets T to the surface temperature of the heat balance (§5.14).
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_DRIVE_H
-#define LMP_CELL_DRIVE_H
+#ifndef LMP_FIX_CELL_TURGOR_DRIVE_H
+#define LMP_FIX_CELL_TURGOR_DRIVE_H
 
 #include "cell_quantity.h"
 #include "cell_water.h"
@@ -19,10 +19,10 @@
 
 namespace LAMMPS_NS {
 
-class CellDrive : protected Pointers {
+class TurgorDrive : protected Pointers {
  public:
   enum Kind { PSI = 0, AIR = 1, CURVE = 2 };
-  CellDrive(class LAMMPS *, const std::string &command);
+  TurgorDrive(class LAMMPS *, const std::string &command);
 
   // the keyword arg[0] of narg arguments if it is one of this class's: the arguments it used
   // (keyword and values), else 0; tref: the reference temperature so far (the check of air)

@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
 ------------------------------------------------------------------------- */
 
-#include "cell_network.h"
+#include "fix_cell_turgor_network.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -92,8 +92,8 @@ void CellExactSum::allreduce(CellExactSum *sums, int count, MPI_Comm comm)
    receiver's order without a set-up exchange: both ranks hold the junctions between them
 ------------------------------------------------------------------------- */
 
-void CellNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edge> &edges,
-                            const std::function<int(int)> &rank_of)
+void TurgorNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edge> &edges,
+                              const std::function<int(int)> &rank_of)
 {
   nown = (int) cells.size();
   auto own = [&](int c) {
@@ -170,7 +170,7 @@ void CellNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edg
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::halo(std::vector<double> &v) const
+void TurgorNetwork::halo(std::vector<double> &v) const
 {
   const int n = (int) neighbours.size();
   std::vector<double> send(sendcells.size());
@@ -188,7 +188,7 @@ void CellNetwork::halo(std::vector<double> &v) const
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::set_cells(const Cells &cells)
+void TurgorNetwork::set_cells(const Cells &cells)
 {
   state = cells;
   psi.assign(ntotal, 0.0);
@@ -201,7 +201,7 @@ void CellNetwork::set_cells(const Cells &cells)
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::rates(std::vector<double> &rate) const
+void TurgorNetwork::rates(std::vector<double> &rate) const
 {
   rate.assign(nown, 0.0);
   for (int c = 0; c < nown; c++)
@@ -212,7 +212,7 @@ void CellNetwork::rates(std::vector<double> &rate) const
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::conductances(std::vector<double> &g) const
+void TurgorNetwork::conductances(std::vector<double> &g) const
 {
   g.assign(nown, 0.0);
   // L_ii = sum_j g_ij, the diagonal of the graph Laplacian (doc/model.md §5.13)
@@ -222,7 +222,7 @@ void CellNetwork::conductances(std::vector<double> &g) const
 
 /* ---------------------------------------------------------------------- */
 
-double CellNetwork::stiffness(double dtw) const
+double TurgorNetwork::stiffness(double dtw) const
 {
   double most = 0.0, all;
   // two cells relax psi_j - psi_i at the rate g (s_i + s_j) (doc/model.md §5.13)
@@ -244,7 +244,7 @@ double CellNetwork::stiffness(double dtw) const
    sums to zero to round-off (doc/model.md §5.13)
 ------------------------------------------------------------------------- */
 
-bool CellNetwork::step(double dtw, Change &change)
+bool TurgorNetwork::step(double dtw, Change &change)
 {
   const double tol = 1e-14;
   std::vector<double> root(ntotal), factor(nown), diag(nown), invdiag(nown), b(nown);
