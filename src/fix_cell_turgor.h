@@ -1,7 +1,11 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor: water transfer through the cell wall driven by turgor, osmotic pressure and the
-   external water potential, or air of a given temperature and humidity (doc/model.md §5)
+   external water potential, or air of a given temperature and humidity (doc/model.md §5).
+   Its parts, each in fix_cell_turgor_<part>.{h,cpp}: drive (T, psi_ext, air, curve), osmotic
+   (pi), accel (time-scale bridging), state (per-cell state), junctions and network (water
+   between cells), restart (restart file, per-atom storage: a .cpp of this class); cell_water.h
+   its pure water physics
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_CELL_TURGOR_H
@@ -68,6 +72,9 @@ class FixCellTurgor : public Fix {
 
  protected:
   enum Limit { LIMIT_ERROR = 0, LIMIT_WARN = 1 };
+  // the wall's permeability L_P at Tref (m s^-1 Pa^-1) is lp everywhere; rho_w L_P(T) per area
+  // (kg m^-2 s^-1 Pa^-1) is rho_lp; a cell's conductance G = d(dM/dt)/d(-psi_cell), rho_w L_P A
+  // for psi (kg s^-1 Pa^-1), is conductance (doc/model.md §5.1, §5.8)
   double lp, pi0, rhow;
   TurgorAccel accel;              // accel, fixed or auto
   double ea;                      // activation energy of L_P (J/mol)
@@ -117,7 +124,48 @@ class FixCellTurgor : public Fix {
   int every = 1;    // N: a transfer every N steps
   bool network_stale = true;    // the network's junctions to set up again (new home ranks)
 
+  // what the fix command's keywords set besides the members, for the checks after them
+  struct Keywords {
+    bool lp_set = false, pi0_set = false;
+    bool exchanging = false;         // 'exchange' given
+    int bondtype = 0;                // 'exchange ... bondtype N'
+    std::string areas;               // 'exchange ... areas FILE'
+    bool lcc_file = false;           // 'exchange file ...': L_cc from the parameter file
+    double file_lcc = -1.0;          // turgor_Lcc of the last 'file', -1 if none
+    std::string measure = "wall";    // 'turgor sph|wall'
+  };
+  int parse_keyword(int narg, char **arg, Keywords &given);
+  int parse_exchange(int narg, char **arg, Keywords &given);
+  void parse_limit(const char *value);
+  void read_file(const char *file, Keywords &given);
+  void check_keywords(const Keywords &given);
+
+  // one evaluation: per home cell, in the order of the registry's home cells
+  struct Evaluation {
+    const std::vector<int> &home;       // the home cells
+    TurgorAccel::Cycle cycle;           // the transfer's place in the accel cycle
+    double dtw;                         // physical time of the transfer (s), 0 when sealed
+    std::vector<double> turgor;         // flux turgor P_T (Pa)
+    std::vector<double> conductance;    // G (kg s^-1 Pa^-1)
+    std::vector<double> scale;          // the transfer's dM/M
+    double moved;                       // water moved into the home cells (kg)
+    double first_accel;                 // accel auto: the smallest first accel, HUGE_VAL: none
+    TurgorNetwork::Cells net;           // exchange: psi, dpsi/dM, rate and z
+    std::vector<double> net_mass;       // exchange: M (kg)
+    double air[2];                      // air: the exposed cells' vapour flux and area
+    double arrhenius;                   // L_P(T)/L_P = L_cc(T)/L_cc at the drive's T
+    double rho_lp;                      // rho_w L_P(T) at the drive's T
+  };
   void evaluate(bool transfer);
+  Evaluation begin_evaluation(bool transfer);
+  void check_cells(Evaluation &e, bool transfer);
+  void cool_surface(const Evaluation &e);
+  bool cell_flux(Evaluation &e, int pos, bool transfer);
+  bool own_transfer(Evaluation &e, int pos, double mass, double rate, double z, double turgor,
+                    double pi);
+  void gather_maxima(Evaluation &e);
+  void network_transfer(Evaluation &e, bool transfer);
+  void spread(const Evaluation &e);
   void control(const TurgorAccel::Cycle &cycle, bool limit, bool transfer,
                const std::vector<double> &turgors, const std::vector<double> &conductances);
   void apply_pending();
@@ -130,6 +178,7 @@ class FixCellTurgor : public Fix {
   bool check_limit(int c, TurgorState::Cell &s, double turgor, double pi, double demand);
   double flux_turgor(int c, TurgorState::Cell &s, bool advance);
   double arrhenius_factor(double t) const;    // L_P(T)/L_P (and L_cc), 1 without Ea
+  double rho_lp(double t) const;              // rho_w L_P(T)
   double pair_bulk_modulus();
 };
 

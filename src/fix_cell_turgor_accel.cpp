@@ -165,8 +165,8 @@ bool TurgorAccel::lag(const double *p, bigint open, double flux, double &e, doub
 
 /* ----------------------------------------------------------------------
    the first accel of a cell: a = tol tau_w / tau_m with the water relaxation time
-   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the offset
-   time tau, the one mechanical time known before the run; the window then measures the lag
+   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the
+   offset time tau, the one mechanical time known before the run; the window then measures the lag
 ------------------------------------------------------------------------- */
 
 double TurgorAccel::first(double conductance, double slope, double eps, double mass,
@@ -265,19 +265,19 @@ void TurgorAccel::after(const Cycle &at, bool bound, bool transfer, const Home &
     return;
   }
   if (at.sample)
-    for (size_t h = 0; h < home.probe.size(); h++)
-      sample(home.probe[h], at, home.turgor[h], home.rate[h], home.conductance[h]);
+    for (size_t pos = 0; pos < home.probe.size(); pos++)
+      sample(home.probe[pos], at, home.turgor[pos], home.rate[pos], home.conductance[pos]);
   if (transfer && at.position == at.every + at.hold - 1)
     adapt(at.every, std::vector<const double *>(home.probe.begin(), home.probe.end()), cells);
   if (bound) limit(home.mass, home.rate, step, transfer);
 }
 
 /* ----------------------------------------------------------------------
-   the ceiling of accel for the next transfers (doc/fix_cell_turgor.md, Safe bridging): each cell's water changes by
-   at most 'change' of itself per transfer, and in the last half of its allowance (1.5 x the
-   shortest longest edge since the start; pair cell/sph stops a run at 1.5 x the longest at the
-   run's start) the longest wall edge grows by at most 'change' x the room left: at most halved
-   per transfer; never below 'min'
+   the ceiling of accel for the next transfers (doc/fix_cell_turgor.md, Safe bridging): each cell's
+   water changes by at most 'change' of itself per transfer, and in the last half of its allowance
+   (1.5 x the shortest longest edge since the start; pair cell/sph stops a run at 1.5 x the longest
+   at the run's start) the longest wall edge grows by at most 'change' x the room left: at most
+   halved per transfer; never below 'min'
 ------------------------------------------------------------------------- */
 
 void TurgorAccel::limit(const std::vector<double> &mass, const std::vector<double> &rate,
@@ -285,8 +285,9 @@ void TurgorAccel::limit(const std::vector<double> &mass, const std::vector<doubl
 {
   double ceiling = HUGE_VAL, all;
   // |dM|/M = a N dt |dM/dt| / M <= change
-  for (size_t h = 0; h < mass.size(); h++)
-    if (rate[h] != 0.0) ceiling = std::min(ceiling, change * mass[h] / (step * fabs(rate[h])));
+  for (size_t pos = 0; pos < mass.size(); pos++)
+    if (rate[pos] != 0.0)
+      ceiling = std::min(ceiling, change * mass[pos] / (step * fabs(rate[pos])));
   MPI_Allreduce(&ceiling, &all, 1, MPI_DOUBLE, MPI_MIN, world);
   double a = std::min(value, all);
   // the longest wall edge as pair cell/sph's guard measures it

@@ -281,8 +281,8 @@ double TurgorDrive::flow_transfer(double t, double u, double l) const
 }
 
 /* ----------------------------------------------------------------------
-   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <= CellLimits::HM_MAX; 'when'
-   ends the message
+   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <=
+   CellLimits::HM_MAX; 'when' ends the message
 ------------------------------------------------------------------------- */
 
 void TurgorDrive::check_air(double t, double rh, double hm, const std::string &when) const

@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -127,6 +129,19 @@ class TurgorNetwork {
 
   // v: a value per own cell, then room for the halo, which this fills from the cells' ranks
   void halo(std::vector<double> &v) const;
+
+  // step(): the solve's tolerance relative to the right-hand side
+  static constexpr double STEP_TOL = 1e-14;
+  // step()'s system on this rank's rows: S^1/2 (own then halo), C, the diagonal, its inverse, the
+  // right-hand side and the off-diagonal entries (CSR as cond)
+  struct System {
+    std::vector<double> root, factor, diag, invdiag, b, off;
+  };
+  System assemble(double dtw) const;
+  void dots(std::initializer_list<std::pair<const double *, const double *>> pairs,
+            double *out) const;
+  bool solve(const System &sys, std::vector<double> &x);
+  void finish(double dtw, const System &sys, const std::vector<double> &x, Change &change) const;
 };
 
 }    // namespace LAMMPS_NS
