@@ -1,6 +1,6 @@
-// Time of one water-network step (src/cell_network.cpp) against the number of cells: the cells of
-// a periodic BCC lattice (each a truncated octahedron, Kelvin's 14-face cell; 8 hexagonal and 6
-// square faces) or a simple cubic one (6 faces), one junction per face, conductances and
+// Time of one water-network step (src/fix_cell_turgor_network.cpp) against the number of cells: the
+// cells of a periodic BCC lattice (each a truncated octahedron, Kelvin's 14-face cell; 8 hexagonal
+// and 6 square faces) or a simple cubic one (6 faces), one junction per face, conductances and
 // stiffnesses s spread over a decade each, each cell also exchanging with the outside; the step
 // stiffness dt_w g s is AMP x (1..100) (AMP default 1). On any number of MPI ranks, each holding a
 // block of consecutive cells (slabs of the lattice in z) and the junctions that touch them.
@@ -8,7 +8,7 @@
 // halo, assemble, conjugate gradients, fluxes; the slowest rank) over the repeats, its CG
 // iterations, the water balance |sum of exchange| / gross and sum |dM| over the cells of the last
 // one (the same bit for bit on any number of ranks). Built and run by bench/network_step.sh.
-#include "cell_network.h"
+#include "fix_cell_turgor_network.h"
 
 #include <mpi.h>
 
@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-using LAMMPS_NS::CellNetwork;
+using LAMMPS_NS::TurgorNetwork;
 
 // junctions of an m x m x m periodic lattice: bcc (2 m^3 cells) or sc (m^3)
-static int lattice(int m, bool bcc, std::vector<CellNetwork::Edge> &edges)
+static int lattice(int m, bool bcc, std::vector<TurgorNetwork::Edge> &edges)
 {
   const int per = bcc ? 2 : 1, n = per * m * m * m;
   auto id = [&](int b, int x, int y, int z) {
@@ -74,19 +74,19 @@ int main(int argc, char **argv)
            "cg_iter", "net/gross", "sum|dM|");
   }
   for (int m : sizes) {
-    std::vector<CellNetwork::Edge> all;
+    std::vector<TurgorNetwork::Edge> all;
     const int n = lattice(m, bcc, all);
     // rank p holds the cells [n p / P, n (p + 1) / P)
     auto rank_of = [&](int c) { return (int) ((long) c * nprocs / n); };
     std::vector<int> mine;
     for (int c = 0; c < n; c++)
       if (rank_of(c) == me) mine.push_back(c);
-    std::vector<CellNetwork::Edge> edges;
+    std::vector<TurgorNetwork::Edge> edges;
     const int nmine = (int) mine.size();
-    CellNetwork::Cells cells{std::vector<double>(nmine), std::vector<double>(nmine),
+    TurgorNetwork::Cells cells{std::vector<double>(nmine), std::vector<double>(nmine),
                              std::vector<double>(nmine), std::vector<double>(nmine)};
-    CellNetwork net(MPI_COMM_WORLD);
-    CellNetwork::Change change;
+    TurgorNetwork net(MPI_COMM_WORLD);
+    TurgorNetwork::Change change;
     double total = 0.0, balance = 0.0, sum = 0.0;
     int iterations = 0;
     // the same random values on every rank count: drawn for all cells, kept for this rank's

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Time of one water-network step of fix cell/turgor's 'exchange' (src/cell_network.cpp: halo,
-# assemble, conjugate gradients, fluxes) against the number of cells on a periodic BCC lattice of
-# Kelvin cells (14 junctions per cell) at step stiffnesses dt_w g s of 1-100 and 1e4-1e6 (a huge
+# Time of one water-network step of fix cell/turgor's 'exchange' (src/fix_cell_turgor_network.cpp:
+# halo, assemble, conjugate gradients, fluxes) against the number of cells on a periodic BCC lattice
+# of Kelvin cells (14 junctions per cell) at step stiffnesses dt_w g s of 1-100 and 1e4-1e6 (a huge
 # L_cc), and on a simple cubic one (6 junctions), on 1 and 2 MPI ranks (each rank a slab of the
 # lattice): one table each (bench/network_step.cpp; its last column is the same bit for bit on any
 # number of ranks). Usage: bench/network_step.sh [repeats=10 [m ...]], m the lattice sizes (bcc:
@@ -16,7 +16,7 @@ work=${WORK:-$(mktemp -d)}
 if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 eigen=$(pkg-config --cflags eigen3 2>/dev/null || echo -I/usr/include/eigen3)
 ${MPICXX:-mpicxx} -std=c++17 -O3 -DNDEBUG $eigen -I"$here/../src" "$here/network_step.cpp" \
-  "$here/../src/cell_network.cpp" -o "$work/network_step"
+  "$here/../src/fix_cell_turgor_network.cpp" -o "$work/network_step"
 repeats=${1:-10}
 sizes=("${@:2}")
 # sc: about as many cells as bcc's 2 m^3

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    Reading a style's keywords, shared by the style and the helper classes that take some of them
-   (fix cell/turgor: CellDrive, CellOsmotic): the values after a keyword
+   (fix cell/turgor: TurgorDrive, TurgorOsmotic): the values after a keyword
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_ARGS_H

@@ -122,8 +122,9 @@ inline double dew_point(double rho, double tmax)
 
 // viscosity of liquid water (Pa s), Vogel equation mu_w = A 10^(B / (T - C)), A = 2.414e-5 Pa s,
 // B = 247.8 K, C = 140 K: 0.890, 0.651, 0.463, 0.400 mPa s at 25, 40, 60, 70 C (measured: 0.890,
-// 0.653, 0.466, 0.404), within about 2 % of tabulated values from 0 to 100 C (-2.2 % at 0 C) (Al-Shemmeri, Engineering Fluid Mechanics, 2012; CRC
-// Handbook of Chemistry and Physics); used by pair cell/sph (doc/model.md §5.9)
+// 0.653, 0.466, 0.404), within about 2 % of tabulated values from 0 to 100 C (-2.2 % at 0 C)
+// (Al-Shemmeri, Engineering Fluid Mechanics, 2012; CRC Handbook of Chemistry and Physics); used by
+// pair cell/sph (doc/model.md §5.9)
 constexpr double VOGEL_TMIN = 273.15;    // range of the correlation (K), 0-370 C
 constexpr double VOGEL_TMAX = 643.15;
 inline double water_viscosity(double t)
@@ -157,39 +158,41 @@ struct Gab {
   }
 };
 
-// The wall (conductance gw = rho_w L_P, kg m^-2 s^-1 Pa^-1) in series with an air film
-// (h_m, m/s): the flux continuity gw (psi_cell - psi_s) = h_m (rho_sat a(psi_s) - rho_air) for the
-// surface water potential psi_s, solved exactly (doc/model.md §5.8)
+// The wall (rho_lp = rho_w L_P, kg m^-2 s^-1 Pa^-1) in series with an air film (h_m, m/s): the
+// flux continuity rho_lp (psi_cell - psi_s) = h_m (rho_sat a(psi_s) - rho_air) for the surface
+// water potential psi_s, solved exactly (doc/model.md §5.8)
 struct AirFlux {
   double psi_surface;    // psi_s (Pa)
   double flux;           // J, out of the cell (kg m^-2 s^-1)
-  double conductance;    // dJ/dpsi_cell = 1 / (1/gw + 1/g_air), g_air = h_m rho_sat a V_w/(R T)
+  // dJ/dpsi_cell = 1 / (1/rho_lp + 1/g_air) per area (kg m^-2 s^-1 Pa^-1), the air film's
+  // g_air = h_m rho_sat a V_w/(R T)
+  double dflux;
 };
 
 // rho_sat = rho_v,sat(T_s) of the surface, rho_air = RH rho_v,sat(T_air) > 0 of the air
-inline AirFlux air_flux(double psi_cell, double t, double gw, double hm, double rho_sat,
+inline AirFlux air_flux(double psi_cell, double t, double rho_lp, double hm, double rho_sat,
                         double rho_air)
 {
   const double rt = GAS_R * t / WATER_V;
-  if (gw == 0.0 && hm == 0.0) return {psi_cell, 0.0, 0.0};
-  // g(u) = gw (psi_cell - rt u) - h_m (rho_sat e^u - rho_air), u = ln a_s: decreasing and concave,
-  // root between u_cell = psi_cell / rt and u_air = ln(rho_air / rho_sat); Newton from the larger
-  // (where g <= 0) converges monotonically to it without leaving the bracket
+  // (rho_lp == 0.0 && hm == 0.0) return {psi_cell, 0.0, 0.0}; f(u) = rho_lp (psi_cell - rt u) - h_m
+  // (rho_sat e^u - rho_air), u = ln a_s: decreasing and concave, root between u_cell = psi_cell /
+  // rt and u_air = ln(rho_air / rho_sat); Newton from the larger
+  // (where f <= 0) converges monotonically to it without leaving the bracket
   const double ucell = psi_cell / rt, uair = log(rho_air / rho_sat);
   const double lo = std::min(ucell, uair);
   double u = std::max(ucell, uair);
   for (int iter = 0; iter < 100; iter++) {
     const double vap = hm * rho_sat * exp(u);
-    const double g = gw * (psi_cell - rt * u) - (vap - hm * rho_air);
-    const double step = g / (gw * rt + vap);
+    const double residual = rho_lp * (psi_cell - rt * u) - (vap - hm * rho_air);
+    const double step = residual / (rho_lp * rt + vap);
     u = std::max(lo, u + step);
     if (fabs(step) <= 1e-15 * (1.0 + fabs(u))) break;
   }
   const double vap = hm * rho_sat * exp(u);
   const double gair = vap / rt;
-  const double conductance = (gw > 0.0 && gair > 0.0) ? gw * gair / (gw + gair) : 0.0;
+  const double dflux = (rho_lp > 0.0 && gair > 0.0) ? rho_lp * gair / (rho_lp + gair) : 0.0;
   // J = h_m (rho_sat a_s - rho_air) (doc/model.md §5.8)
-  return {rt * u, vap - hm * rho_air, conductance};
+  return {rt * u, vap - hm * rho_air, dflux};
 }
 
 }    // namespace CellWater

@@ -12,14 +12,13 @@
 #include "bond.h"
 #include "cell_args.h"
 #include "cell_compat.h"
-#include "cell_junctions.h"
 #include "cell_limits.h"
 #include "cell_params.h"
 #include "cell_reduce.h"
-#include "cell_restart.h"
 #include "cell_water.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_cell_turgor_junctions.h"
 #include "force.h"
 #include "group.h"
 #include "input.h"
@@ -36,23 +35,6 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
-
-// 7: + the wall edges of accel; 6: + the water and time of the transfer waiting to be applied (per
-// atom: its mass change); 5: + water exchanged between cells; 4: + accel auto state; 3: + solids
-// per cell; 2: begins with -version; 1: none
-static const int RESTART_VERSION = 7;
-
-// the largest conductance L_P or L_cc (m s^-1 Pa^-1) and activation energy Ea (J/mol) accepted, far
-// above any membrane's (doc/fix_cell_turgor.md); the messages give them as 1e3 and 1e6
-
-// global restart values after the number of cells: physical time, water moved (1-3), adapted
-// accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
-// between cells (5), water and physical time of the waiting transfer, the step of the last
-// transfer's evaluation (6), the shortest and the last longest wall edge, its growth (7)
-static int restart_globals(int version)
-{
-  return version >= 7 ? 14 : version >= 6 ? 11 : version >= 5 ? 8 : (version >= 4 ? 7 : 2);
-}
 
 /* ---------------------------------------------------------------------- */
 
@@ -71,130 +53,19 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   every = utils::inumeric(FLERR, arg[3], false, lmp);
   if (every <= 0) error->all(FLERR, "Fix cell/turgor: N = {} must be > 0", every);
 
-  bool lp_set = false, pi0_set = false;
-  int bondtype = 0;           // 'exchange ... bondtype N'
-  bool exchanging = false;    // 'exchange' given
-  std::string areas;          // 'exchange ... areas FILE'
-  bool lcc_file = false;      // 'exchange file ...': L_cc from the parameter file's turgor_Lcc
-  double file_lcc = -1.0;     // turgor_Lcc of the last 'file', -1 if none
-  std::string measure = "wall";
-  int iarg = 4;
-  // the values after keyword key: n of them, or stop
-  auto values = [&](const std::string &key, int n) {
-    if (iarg + n >= narg)
-      error->all(FLERR, "Fix cell/turgor: missing value after '{}' (expected {})", key, n);
-    return &arg[iarg + 1];
-  };
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    const char *value = values(key, 1)[0];
-    int used = 2;
-    if (key == "LP") {
-      lp = utils::numeric(FLERR, value, false, lmp);
-      lp_set = true;
-    } else if (key == "pi0") {
-      pi0 = utils::numeric(FLERR, value, false, lmp);
-      pi0_set = true;
-    } else if (int n = drive.parse(narg - iarg, &arg[iarg], osmotic_model.tref)) {
-      used = n;
-    } else if (key == "Ea") {
-      ea = utils::numeric(FLERR, value, false, lmp);
-      if (!(ea >= 0.0 && ea <= CellLimits::EA_MAX))
-        error->all(FLERR,
-                   "Fix cell/turgor: activation energy Ea = {} must be >= 0 and <= 1e6 J/mol", ea);
-    } else if (key == "rhow") {
-      rhow = utils::numeric(FLERR, value, false, lmp);
-      if (rhow <= 0.0)
-        error->all(FLERR, "Fix cell/turgor: water density rhow = {} must be > 0", rhow);
-    } else if (key == "exchange") {
-      char **v = values(key, 3);
-      if (strcmp(v[1], "bondtype") != 0)
-        error->all(FLERR,
-                   "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
-                   v[0], v[1]);
-      lcc_file = strcmp(v[0], "file") == 0;
-      if (!lcc_file) lcc = CellQuantity::parse(lmp, v[0], "Fix cell/turgor: exchange L_cc");
-      if (!lcc_file && !lcc.is_variable()) check_lcc(lcc.value, "");
-      bondtype = utils::inumeric(FLERR, v[2], false, lmp);
-      exchanging = true;
-      used = 4;
-      if (iarg + 5 < narg && strcmp(arg[iarg + 4], "areas") == 0) {
-        areas = arg[iarg + 5];
-        used = 6;
-      }
-    } else if (key == "accel") {
-      used = 1 + accel.parse(narg - iarg - 1, &arg[iarg + 1], "Fix cell/turgor");
-    } else if (key == "bulk") {
-      bulk = utils::numeric(FLERR, value, false, lmp);
-      if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
-    } else if (key == "limit") {
-      if (strcmp(value, "error") == 0)
-        limit = LIMIT_ERROR;
-      else if (strcmp(value, "warn") == 0)
-        limit = LIMIT_WARN;
-      else
-        error->all(FLERR, "Fix cell/turgor: unknown limit action '{}' (expected error or warn)",
-                   value);
-      limit_set = 1;
-    } else if (int n = osmotic_model.parse(narg - iarg, &arg[iarg])) {
-      used = n;
-    } else if (key == "file") {
-      CellParams params(lmp, value, "Fix cell/turgor");
-      lp = params.nonnegative("turgor_LP", CellLimits::CONDUCTANCE_MAX, "m s^-1 Pa^-1");
-      pi0 = params.nonnegative("turgor_pi0");
-      lp_set = pi0_set = true;
-      // optional drying keys (doc/fix_cell_turgor.md)
-      if (params.has("turgor_Ea"))
-        ea = params.nonnegative("turgor_Ea", CellLimits::EA_MAX, "J/mol");
-      if (params.has("turgor_Lcc"))
-        file_lcc = params.nonnegative("turgor_Lcc", CellLimits::CONDUCTANCE_MAX, "m s^-1 Pa^-1");
-      osmotic_model.read(params, value);
-    } else if (key == "turgor") {
-      measure = value;
-    } else if (key == "tau") {
-      tau = utils::numeric(FLERR, value, false, lmp);
-      if (tau <= 0.0) error->all(FLERR, "Fix cell/turgor: offset time tau = {} must be > 0", tau);
-    } else if (key == "fluid") {
-      fluidtype = utils::inumeric(FLERR, value, false, lmp);
-    } else if (key == "wall") {
-      walltype = utils::inumeric(FLERR, value, false, lmp);
-    } else {
-      error->all(FLERR, "Fix cell/turgor: unknown keyword '{}'", key);
-    }
-    iarg += used;
-  }
-  if (!lp_set) error->all(FLERR, "Fix cell/turgor: wall permeability not set: give 'LP value'");
-  check_lp(lp, "Fix cell/turgor");
-  if (!pi0_set) error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
-  if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
-  drive.check(osmotic_model.tref);
-  osmotic_model.check();
-  if (accel.automatic && drive.kind == CellDrive::CURVE)
-    error->all(FLERR,
-               "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
-               "flux that the mechanics could delay)");
-
-  if (lcc_file) {
-    if (file_lcc < 0.0)
-      error->all(FLERR,
-                 "Fix cell/turgor: 'exchange file' takes L_cc from the key turgor_Lcc of a "
-                 "parameter file: give 'file name' with that key");
-    lcc = CellQuantity{file_lcc, "", -1};
-  }
-  if (exchanging && drive.kind == CellDrive::CURVE)
-    error->all(FLERR,
-               "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
-               "cell's water)");
+  Keywords given;
+  for (int iarg = 4; iarg < narg;) iarg += parse_keyword(narg - iarg, &arg[iarg], given);
+  check_keywords(given);
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
-  cells->set_turgor(measure);
+  cells->set_turgor(given.measure);
   if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
-  if (exchanging) {
+  if (given.exchanging) {
     // bond type 0 too is out of range there
-    junctions = std::make_unique<CellJunctions>(lmp, "Fix cell/turgor", bondtype, areas);
-    network = std::make_unique<CellNetwork>(world);
+    junctions =
+        std::make_unique<TurgorJunctions>(lmp, "Fix cell/turgor", given.bondtype, given.areas);
+    network = std::make_unique<TurgorNetwork>(world);
   }
-
   vector_flag = 1;
   size_vector = 19;
   global_freq = 1;
@@ -207,6 +78,145 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   for (int i = 0; i < atom->nlocal; i++) pending[i] = 0.0;
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
+}
+
+/* ----------------------------------------------------------------------
+   the keyword arg[0] of the narg arguments left and its values: returns how many it used. The
+   drive's (psi, air, curve, temp, cooling) and the osmotic model's keywords go to their classes
+------------------------------------------------------------------------- */
+
+int FixCellTurgor::parse_keyword(int narg, char **arg, Keywords &given)
+{
+  const std::string key = arg[0];
+  const char *value = CellArgs::values(error, "Fix cell/turgor", narg, arg, 1)[0];
+  if (key == "LP") {
+    lp = utils::numeric(FLERR, value, false, lmp);
+    given.lp_set = true;
+  } else if (key == "pi0") {
+    pi0 = utils::numeric(FLERR, value, false, lmp);
+    given.pi0_set = true;
+  } else if (int n = drive.parse(narg, arg, osmotic_model.tref)) {
+    return n;
+  } else if (key == "Ea") {
+    ea = utils::numeric(FLERR, value, false, lmp);
+    if (!(ea >= 0.0 && ea <= CellLimits::EA_MAX))
+      error->all(FLERR, "Fix cell/turgor: activation energy Ea = {} must be >= 0 and <= 1e6 J/mol",
+                 ea);
+  } else if (key == "rhow") {
+    rhow = utils::numeric(FLERR, value, false, lmp);
+    if (rhow <= 0.0)
+      error->all(FLERR, "Fix cell/turgor: water density rhow = {} must be > 0", rhow);
+  } else if (key == "exchange") {
+    return parse_exchange(narg, arg, given);
+  } else if (key == "accel") {
+    return 1 + accel.parse(narg - 1, &arg[1], "Fix cell/turgor");
+  } else if (key == "bulk") {
+    bulk = utils::numeric(FLERR, value, false, lmp);
+    if (bulk <= 0.0) error->all(FLERR, "Fix cell/turgor: bulk modulus K = {} must be > 0", bulk);
+  } else if (key == "limit") {
+    parse_limit(value);
+  } else if (int n = osmotic_model.parse(narg, arg)) {
+    return n;
+  } else if (key == "file") {
+    read_file(value, given);
+  } else if (key == "turgor") {
+    given.measure = value;
+  } else if (key == "tau") {
+    tau = utils::numeric(FLERR, value, false, lmp);
+    if (tau <= 0.0) error->all(FLERR, "Fix cell/turgor: offset time tau = {} must be > 0", tau);
+  } else if (key == "fluid") {
+    fluidtype = utils::inumeric(FLERR, value, false, lmp);
+  } else if (key == "wall") {
+    walltype = utils::inumeric(FLERR, value, false, lmp);
+  } else {
+    error->all(FLERR, "Fix cell/turgor: unknown keyword '{}'", key);
+  }
+  return 2;
+}
+
+/* ----------------------------------------------------------------------
+   exchange L_cc|file bondtype N [areas FILE]: returns how many arguments it used
+------------------------------------------------------------------------- */
+
+int FixCellTurgor::parse_exchange(int narg, char **arg, Keywords &given)
+{
+  char **v = CellArgs::values(error, "Fix cell/turgor", narg, arg, 3);
+  if (strcmp(v[1], "bondtype") != 0)
+    error->all(FLERR, "Fix cell/turgor: expected 'exchange L_cc bondtype N', not 'exchange {} {}'",
+               v[0], v[1]);
+  given.lcc_file = strcmp(v[0], "file") == 0;
+  if (!given.lcc_file) lcc = CellQuantity::parse(lmp, v[0], "Fix cell/turgor: exchange L_cc");
+  if (!given.lcc_file && !lcc.is_variable()) check_lcc(lcc.value, "");
+  given.bondtype = utils::inumeric(FLERR, v[2], false, lmp);
+  given.exchanging = true;
+  if (5 < narg && strcmp(arg[4], "areas") == 0) {
+    given.areas = arg[5];
+    return 6;
+  }
+  return 4;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTurgor::parse_limit(const char *value)
+{
+  if (strcmp(value, "error") == 0)
+    limit = LIMIT_ERROR;
+  else if (strcmp(value, "warn") == 0)
+    limit = LIMIT_WARN;
+  else
+    error->all(FLERR, "Fix cell/turgor: unknown limit action '{}' (expected error or warn)", value);
+  limit_set = 1;
+}
+
+/* ----------------------------------------------------------------------
+   file NAME: L_P (turgor_LP) and pi0, optionally Ea, L_cc and the osmotic model's keys
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::read_file(const char *file, Keywords &given)
+{
+  CellParams params(lmp, file, "Fix cell/turgor");
+  lp = params.nonnegative("turgor_LP", CellLimits::CONDUCTANCE_MAX, "m s^-1 Pa^-1");
+  pi0 = params.nonnegative("turgor_pi0");
+  given.lp_set = given.pi0_set = true;
+  // optional drying keys (doc/fix_cell_turgor.md)
+  if (params.has("turgor_Ea")) ea = params.nonnegative("turgor_Ea", CellLimits::EA_MAX, "J/mol");
+  if (params.has("turgor_Lcc"))
+    given.file_lcc = params.nonnegative("turgor_Lcc", CellLimits::CONDUCTANCE_MAX, "m s^-1 Pa^-1");
+  osmotic_model.read(params, file);
+}
+
+/* ----------------------------------------------------------------------
+   after all keywords: L_P and pi0 given, one drive, and accel auto and exchange with a drive
+   that has a flux
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::check_keywords(const Keywords &given)
+{
+  if (!given.lp_set)
+    error->all(FLERR, "Fix cell/turgor: wall permeability not set: give 'LP value'");
+  check_lp(lp, "Fix cell/turgor");
+  if (!given.pi0_set)
+    error->all(FLERR, "Fix cell/turgor: osmotic pressure not set: give 'pi0 value'");
+  if (pi0 < 0.0) error->all(FLERR, "Fix cell/turgor: osmotic pressure pi0 = {} must be >= 0", pi0);
+  drive.check(osmotic_model.tref);
+  osmotic_model.check();
+  if (accel.automatic && drive.kind == TurgorDrive::CURVE)
+    error->all(FLERR,
+               "Fix cell/turgor: accel auto needs the psi or air drive (a prescribed curve has no "
+               "flux that the mechanics could delay)");
+
+  if (given.lcc_file) {
+    if (given.file_lcc < 0.0)
+      error->all(FLERR,
+                 "Fix cell/turgor: 'exchange file' takes L_cc from the key turgor_Lcc of a "
+                 "parameter file: give 'file name' with that key");
+    lcc = CellQuantity{given.file_lcc, "", -1};
+  }
+  if (given.exchanging && drive.kind == TurgorDrive::CURVE)
+    error->all(FLERR,
+               "Fix cell/turgor: exchange needs the psi or air drive (a prescribed curve sets each "
+               "cell's water)");
 }
 
 /* ----------------------------------------------------------------------
@@ -373,22 +383,52 @@ void FixCellTurgor::end_of_step()
 void FixCellTurgor::evaluate(bool transfer)
 {
   cells->reduce(gt0.empty() ? nullptr : gt0.data());
+  Evaluation e = begin_evaluation(transfer);
+  check_cells(e, transfer);
+  if (drive.cooling) cool_surface(e);
+  e.arrhenius = arrhenius_factor(drive.temperature);
+  e.rho_lp = rho_lp(drive.temperature);
+  for (int pos = 0; pos < (int) e.home.size() && failure.cell == cells->ncell(); pos++)
+    if (!cell_flux(e, pos, transfer)) break;
+  gather_maxima(e);
+  const bool starting = accel.pending;
+  if (accel.pending) max_stiffness *= accel.begin(e.first_accel);
+  if (junctions) network_transfer(e, transfer);
+  control(e.cycle, transfer || starting, transfer, e.turgor, e.conductance);
+  if (transfer) spread(e);
+}
+
+/* ----------------------------------------------------------------------
+   the start of an evaluation: the transfer's place in the accel cycle and its physical time dtw,
+   the maxima and problems cleared, the drive's inputs
+------------------------------------------------------------------------- */
+
+FixCellTurgor::Evaluation FixCellTurgor::begin_evaluation(bool transfer)
+{
   // the per-cell logic runs on each cell's home rank, for its home cells
   const std::vector<int> &home = cells->home_cells();
   // accel auto: transfer j (at step j N; the next one when not transferring) is at position
   // (j - 1) % (every + hold) of its cycle: open for every transfers, then sealed (no water, no
   // physical time) for hold; the second half of each is sampled (doc/model.md §5.12)
   const bigint next = update->ntimestep + 1;
-  const CellAccel::Cycle cycle =
+  const TurgorAccel::Cycle cycle =
       accel.cycle(next / every + (transfer ? 0 : 1), transfer, offset_time(), every * update->dt);
   const double dtw = cycle.sealed ? 0.0 : accel.value * every * update->dt;
-  std::vector<double> scale(home.size(), 0.0);
-  double moved = 0.0, first_accel = HUGE_VAL;
-  // exchange: per home cell psi, dpsi/dM, rate and z for the network, and M
   const size_t nnet = junctions ? home.size() : 0;
-  CellNetwork::Cells net{std::vector<double>(nnet), std::vector<double>(nnet),
-                         std::vector<double>(nnet), std::vector<double>(nnet)};
-  std::vector<double> net_mass(nnet);
+  Evaluation e{home,
+               cycle,
+               dtw,
+               std::vector<double>(home.size()),
+               std::vector<double>(home.size()),
+               std::vector<double>(home.size(), 0.0),
+               0.0,
+               HUGE_VAL,
+               {std::vector<double>(nnet), std::vector<double>(nnet), std::vector<double>(nnet),
+                std::vector<double>(nnet)},
+               std::vector<double>(nnet),
+               {0.0, 0.0},
+               1.0,
+               0.0};
   max_imbalance = max_stiffness = 0.0;
   failure = Failure{cells->ncell(), ""};
   warnings.clear();
@@ -398,18 +438,24 @@ void FixCellTurgor::evaluate(bool transfer)
   // (the curve's variable reads f_ID[2] at the transfer's end; the fix's clock moves there when
   // the transfer is applied)
   const double start = physical_time;
-  drive.evaluate(physical_time, drive.kind == CellDrive::CURVE && transfer ? dtw : 0.0);
+  drive.evaluate(physical_time, drive.kind == TurgorDrive::CURVE && transfer ? dtw : 0.0);
   physical_time = start;
+  return e;
+}
 
-  // each home cell's flux turgor and conductance, the cell checked and its M0 and S set
-  std::vector<double> turgors(home.size()), conductances(home.size());
-  for (int h = 0; h < (int) home.size(); h++) {
-    const int c = home[h];
+/* ----------------------------------------------------------------------
+   each home cell's flux turgor, the cell checked and its M0 and S set
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::check_cells(Evaluation &e, bool transfer)
+{
+  for (int pos = 0; pos < (int) e.home.size(); pos++) {
+    const int c = e.home[pos];
     const tagint id = cells->id(c);
     const double mass = cells->mass(c);
     const double volume = cells->volume(c);
-    CellTurgorState::Cell &s = state[id];
-    const double turgor = turgors[h] = flux_turgor(c, s, transfer);
+    TurgorState::Cell &s = state[id];
+    const double turgor = e.turgor[pos] = flux_turgor(c, s, transfer);
     if (cells->get(c, CellReduce::NFLUID) == 0.0) {
       failure = Failure{c,
                         fmt::format("Fix cell/turgor: cell {} has no fluid atoms of type {} in "
@@ -429,152 +475,190 @@ void FixCellTurgor::evaluate(bool transfer)
     // dry solids S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water
     if (s.solids == 0.0) s.solids = osmotic_model.solids(s.mass0);
   }
-  if (drive.cooling) {
-    // the surface temperature from every cell's flux at its current state (doc/model.md §5.14)
-    cells->registry().settle(failure.cell, failure.message, warnings);
-    drive.cool([&]() {
-      const double t = drive.temperature;
-      // rho_w L_P(T), as in the loop below
-      const double gw = rhow * (lp * arrhenius_factor(t));
-      double sums[2] = {0.0, 0.0}, all[2];
-      for (int h = 0; h < (int) home.size(); h++) {
-        const int c = home[h];
-        const CellTurgorState::Cell &s = state[cells->id(c)];
-        const double mass = cells->mass(c);
-        const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, nullptr);
-        const double area = cells->area(c), surface = cells->surface_area(c);
-        // the exposed flux f A J = -dM/dt of the air drive (doc/model.md §5.8)
-        sums[0] -= drive.flux(turgors[h] - pi, gw, area, surface, mass, s.mass0, 0.0).rate;
-        sums[1] += drive.exposed_area(area, surface);
-      }
-      MPI_Allreduce(sums, all, 2, MPI_DOUBLE, MPI_SUM, world);
-      // J = sum f A J / sum f A over the exposed cells
-      return all[1] > 0.0 ? all[0] / all[1] : 0.0;
-    });
-  }
-  const double t = drive.temperature, psi_ext = drive.psi_ext;
-  // L_P(T) = L_P exp(-(Ea/R)(1/T - 1/Tref)), the same factor on L_cc (doc/model.md §5.9, §5.13)
-  const double arrhenius = arrhenius_factor(t);
-  const double lpt = lp * arrhenius;
-  double air_sums[2] = {0.0, 0.0};    // the exposed cells' vapour flux and area
+}
 
-  for (int h = 0; h < (int) home.size() && failure.cell == cells->ncell(); h++) {
-    const int c = home[h];
-    const tagint id = cells->id(c);
-    const double mass = cells->mass(c);
-    const double area = cells->area(c);
-    CellTurgorState::Cell &s = state[id];
-    const double turgor = turgors[h];
-    double slope;
-    const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, &slope);
-    // psi_cell = P_T - pi (doc/model.md §5.1)
-    const double psi_cell = turgor - pi;
-    const CellDrive::Flux flux =
-        drive.flux(psi_cell, rhow * lpt, area, cells->surface_area(c), mass, s.mass0, dtw);
-    const double conductance = flux.conductance, rate = flux.rate;
-    s.psi_surface = flux.psi_surface;
-    s.rate = rate;
-    if (drive.kind == CellDrive::AIR) {
-      air_sums[0] -= rate;
-      air_sums[1] += drive.exposed_area(area, cells->surface_area(c));
-    }
-    // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
-    const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
-    const double relax = conductance * std::max(0.0, stiffness);
-    const double z = dtw * relax;
-    if (drive.kind != CellDrive::CURVE)
-      max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
-    max_stiffness = std::max(max_stiffness, z);
-    if (drive.kind != CellDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext)) break;
-    if (accel.pending)
-      first_accel = std::min(first_accel,
-                             accel.first(conductance, slope,
-                                         CellAccel::modulus(kfluid + cells->sph_turgor(c),
-                                                            gt0.empty() ? 0.0 : cells->mean_gt0(c),
-                                                            cells->ref_area(c), cells->area(c)),
-                                         mass, offset_time()));
-    conductances[h] = conductance;
-    if (junctions) {
-      // advanced with the network below (doc/model.md §5.13), which needs psi to rise with M
-      if (!(stiffness > 0.0)) {
-        failure = Failure{c,
-                          fmt::format("Fix cell/turgor: cell {} cannot exchange water: its water "
-                                      "potential does not rise with its water, dpsi/dM = {} Pa/kg "
-                                      "(K + P_SPH = {} Pa)",
-                                      id, stiffness, kfluid + cells->sph_turgor(c))};
-        break;
-      }
-      net.psi[h] = psi_cell;
-      net.s[h] = stiffness;
-      net.rate[h] = rate;
-      net.z[h] = z;
-      net_mass[h] = mass;
-      continue;
-    }
-    if (!transfer) continue;
+/* ----------------------------------------------------------------------
+   cooling: the surface temperature from every cell's flux at its current state (doc/model.md
+   §5.14)
+------------------------------------------------------------------------- */
 
-    // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
-    // M = M0 X/X0(t + dtw)
-    const double dmass = drive.kind == CellDrive::CURVE
-        ? drive.target * s.mass0 - mass
-        : dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
-    if (!(mass + dmass > 0.0)) {
-      failure = Failure{c,
-                        fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
-                                    "{}: fluid mass M = {} kg, change {} kg (psi_ext = {} Pa, "
-                                    "turgor P_T = {} Pa, pi = {} Pa)",
-                                    id, update->ntimestep, mass, dmass, psi_ext, turgor, pi)};
-      break;
-    }
-    scale[h] = dmass / mass;
-    moved += dmass;
-  }
-  // the home ranks' problems stop or warn every rank; maxima over all cells, the busiest rank
+void FixCellTurgor::cool_surface(const Evaluation &e)
+{
   cells->registry().settle(failure.cell, failure.message, warnings);
-  double most[4] = {max_imbalance, max_stiffness, -first_accel,
+  drive.cool([&]() {
+    const double t = drive.temperature;
+    const double rho_lp_t = rho_lp(t);
+    double sums[2] = {0.0, 0.0}, all[2];
+    for (int pos = 0; pos < (int) e.home.size(); pos++) {
+      const int c = e.home[pos];
+      const TurgorState::Cell &s = state[cells->id(c)];
+      const double mass = cells->mass(c);
+      const double pi = osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, t, nullptr);
+      const double area = cells->area(c), surface = cells->surface_area(c);
+      // the exposed flux f A J = -dM/dt of the air drive (doc/model.md §5.8)
+      sums[0] -= drive.flux(e.turgor[pos] - pi, rho_lp_t, area, surface, mass, s.mass0, 0.0).rate;
+      sums[1] += drive.exposed_area(area, surface);
+    }
+    MPI_Allreduce(sums, all, 2, MPI_DOUBLE, MPI_SUM, world);
+    // J = sum f A J / sum f A over the exposed cells
+    return all[1] > 0.0 ? all[0] / all[1] : 0.0;
+  });
+}
+
+/* ----------------------------------------------------------------------
+   home cell e.home[pos]: its osmotic pressure, flux, conductance G and stiffness, its limit
+   point checked; its mass change (own transfer) or its row of the network (exchange). False
+   (with the failure set) stops the evaluation's loop over the cells
+------------------------------------------------------------------------- */
+
+bool FixCellTurgor::cell_flux(Evaluation &e, int pos, bool transfer)
+{
+  const int c = e.home[pos];
+  const double mass = cells->mass(c);
+  const double area = cells->area(c);
+  TurgorState::Cell &s = state[cells->id(c)];
+  const double turgor = e.turgor[pos], psi_ext = drive.psi_ext;
+  double slope;
+  const double pi =
+      osmotic_model.pressure(s.pi0, s.mass0, s.solids, mass, drive.temperature, &slope);
+  // psi_cell = P_T - pi (doc/model.md §5.1)
+  const double psi_cell = turgor - pi;
+  const TurgorDrive::Flux flux =
+      drive.flux(psi_cell, e.rho_lp, area, cells->surface_area(c), mass, s.mass0, e.dtw);
+  const double conductance = flux.conductance, rate = flux.rate;
+  s.psi_surface = flux.psi_surface;
+  s.rate = rate;
+  if (drive.kind == TurgorDrive::AIR) {
+    e.air[0] -= rate;
+    e.air[1] += drive.exposed_area(area, cells->surface_area(c));
+  }
+  // k = G d(P_T - pi)/dM, dP_T/dM = (K + P_SPH)/M (summation density), -dpi/dM = slope
+  const double stiffness = (kfluid + cells->sph_turgor(c)) / mass + slope;
+  const double relax = conductance * std::max(0.0, stiffness);
+  const double z = e.dtw * relax;
+  if (drive.kind != TurgorDrive::CURVE)
+    max_imbalance = std::max(max_imbalance, fabs(psi_ext - psi_cell));
+  max_stiffness = std::max(max_stiffness, z);
+  if (drive.kind != TurgorDrive::CURVE && !check_limit(c, s, turgor, pi, pi + psi_ext))
+    return false;
+  if (accel.pending)
+    e.first_accel =
+        std::min(e.first_accel,
+                 accel.first(conductance, slope,
+                             TurgorAccel::modulus(kfluid + cells->sph_turgor(c),
+                                                  gt0.empty() ? 0.0 : cells->mean_gt0(c),
+                                                  cells->ref_area(c), cells->area(c)),
+                             mass, offset_time()));
+  e.conductance[pos] = conductance;
+  if (junctions) {
+    // advanced with the network below (doc/model.md §5.13), which needs psi to rise with M
+    if (!(stiffness > 0.0)) {
+      failure = Failure{c,
+                        fmt::format("Fix cell/turgor: cell {} cannot exchange water: its water "
+                                    "potential does not rise with its water, dpsi/dM = {} Pa/kg "
+                                    "(K + P_SPH = {} Pa)",
+                                    cells->id(c), stiffness, kfluid + cells->sph_turgor(c))};
+      return false;
+    }
+    e.net.psi[pos] = psi_cell;
+    e.net.s[pos] = stiffness;
+    e.net.rate[pos] = rate;
+    e.net.z[pos] = z;
+    e.net_mass[pos] = mass;
+    return true;
+  }
+  return !transfer || own_transfer(e, pos, mass, rate, z, turgor, pi);
+}
+
+/* ----------------------------------------------------------------------
+   the mass change of home cell e.home[pos] of fluid mass M on its own (no exchange): exponential
+   Euler, or the curve's M0 X/X0(t + dtw); false (with the failure set) if it empties the cell
+------------------------------------------------------------------------- */
+
+bool FixCellTurgor::own_transfer(Evaluation &e, int pos, double mass, double rate, double z,
+                                 double turgor, double pi)
+{
+  const int c = e.home[pos];
+  const TurgorState::Cell &s = state[cells->id(c)];
+  // exponential Euler: dM = dtw r (1 - exp(-z)) / z, z = dtw k (exact when linear); the curve sets
+  // M = M0 X/X0(t + dtw)
+  const double dmass = drive.kind == TurgorDrive::CURVE
+      ? drive.target * s.mass0 - mass
+      : e.dtw * rate * (z > 0.0 ? -expm1(-z) / z : 1.0);
+  if (!(mass + dmass > 0.0)) {
+    failure = Failure{c,
+                      fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
+                                  "{}: fluid mass M = {} kg, change {} kg (psi_ext = {} Pa, "
+                                  "turgor P_T = {} Pa, pi = {} Pa)",
+                                  cells->id(c), update->ntimestep, mass, dmass, drive.psi_ext,
+                                  turgor, pi)};
+    return false;
+  }
+  e.scale[pos] = dmass / mass;
+  e.moved += dmass;
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   the home ranks' problems stop or warn every rank; maxima over all cells, the busiest rank; the
+   air's mean vapour flux over the exposed area
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::gather_maxima(Evaluation &e)
+{
+  cells->registry().settle(failure.cell, failure.message, warnings);
+  double most[4] = {max_imbalance, max_stiffness, -e.first_accel,
                     (double) cells->registry().touched().size()};
   double all_most[4];
   MPI_Allreduce(most, all_most, 4, MPI_DOUBLE, MPI_MAX, world);
   max_imbalance = all_most[0];
   max_stiffness = all_most[1];
-  first_accel = -all_most[2];
+  e.first_accel = -all_most[2];
   busiest = all_most[3];
   exposed_flux = exposed_area = 0.0;
-  if (drive.kind == CellDrive::AIR) {
+  if (drive.kind == TurgorDrive::AIR) {
     double all_air[2];
-    MPI_Allreduce(air_sums, all_air, 2, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(e.air, all_air, 2, MPI_DOUBLE, MPI_SUM, world);
     exposed_area = all_air[1];
     // the mean vapour flux over the exposed area, sum f A J / sum f A
     exposed_flux = exposed_area > 0.0 ? all_air[0] / exposed_area : 0.0;
   }
-  const bool starting = accel.pending;
-  if (accel.pending) max_stiffness *= accel.begin(first_accel);
-  if (junctions) {
-    // the network on the home ranks: each solves its home cells' rows (doc/model.md §5.2)
-    std::vector<double> dmass;
-    exchange(net, transfer, dtw, arrhenius, dmass);
-    for (int h = 0; h < (int) dmass.size(); h++) {
-      const int c = home[h];
-      if (!(net_mass[h] + dmass[h] > 0.0) && failure.cell == cells->ncell())
-        failure = Failure{c,
-                          fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
-                                      "{}: fluid mass M = {} kg, change {} kg with its neighbours "
-                                      "(psi_cell = {} Pa, psi_ext = {} Pa)",
-                                      cells->id(c), update->ntimestep, net_mass[h], dmass[h],
-                                      net.psi[h], psi_ext)};
-      scale[h] = dmass[h] / net_mass[h];
-      moved += dmass[h];
-    }
-    if (transfer) cells->registry().settle(failure.cell, failure.message, {});
-  }
-  control(cycle, transfer || starting, transfer, turgors, conductances);
-  if (!transfer) return;
+}
 
-  // dM/M of each cell from its home rank to its fluid atoms, applied before the next step's forces
-  // (pre_force: m_i <- m_i (1 + dM/M))
+/* ----------------------------------------------------------------------
+   exchange: the network on the home ranks, each solving its home cells' rows (doc/model.md
+   §5.2); each cell's mass change with its neighbours, checked
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::network_transfer(Evaluation &e, bool transfer)
+{
+  std::vector<double> dmass;
+  exchange(e.net, transfer, e.dtw, e.arrhenius, dmass);
+  for (int pos = 0; pos < (int) dmass.size(); pos++) {
+    const int c = e.home[pos];
+    if (!(e.net_mass[pos] + dmass[pos] > 0.0) && failure.cell == cells->ncell())
+      failure = Failure{c,
+                        fmt::format("Fix cell/turgor: cell {} would lose all its water at step "
+                                    "{}: fluid mass M = {} kg, change {} kg with its neighbours "
+                                    "(psi_cell = {} Pa, psi_ext = {} Pa)",
+                                    cells->id(c), update->ntimestep, e.net_mass[pos], dmass[pos],
+                                    e.net.psi[pos], drive.psi_ext)};
+    e.scale[pos] = dmass[pos] / e.net_mass[pos];
+    e.moved += dmass[pos];
+  }
+  if (transfer) cells->registry().settle(failure.cell, failure.message, {});
+}
+
+/* ----------------------------------------------------------------------
+   dM/M of each cell from its home rank to its fluid atoms, applied before the next step's forces
+   (pre_force: m_i <- m_i (1 + dM/M)); the water moved and its physical time wait with it
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::spread(const Evaluation &e)
+{
   const CellRegistry &reg = cells->registry();
   std::vector<double> factor;
-  reg.scatter(1, scale, factor);
+  reg.scatter(1, e.scale, factor);
   const int *type = atom->type;
   const std::vector<int> &cellof = cells->cell_of_atom();
   for (int i = 0; i < atom->nlocal; i++)
@@ -582,9 +666,9 @@ void FixCellTurgor::evaluate(bool transfer)
   any_pending = true;
 
   double all_moved;
-  MPI_Allreduce(&moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&e.moved, &all_moved, 1, MPI_DOUBLE, MPI_SUM, world);
   moved_pending = all_moved;
-  time_pending = dtw;
+  time_pending = e.dtw;
   evaluated = update->ntimestep;
 }
 
@@ -593,20 +677,20 @@ void FixCellTurgor::evaluate(bool transfer)
    and conductance (with the exchange's) for accel auto; the wall edges measured
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::control(const CellAccel::Cycle &cycle, bool limit, bool transfer,
+void FixCellTurgor::control(const TurgorAccel::Cycle &cycle, bool limit, bool transfer,
                             const std::vector<double> &turgors,
                             const std::vector<double> &conductances)
 {
   const std::vector<int> &home = cells->home_cells();
-  CellAccel::Home in{{}, turgors, {}, {}, conductances};
+  TurgorAccel::Home in{{}, turgors, {}, {}, conductances};
   std::vector<double> between;
   if (junctions) network->conductances(between);
-  for (int h = 0; h < (int) home.size() && accel.automatic; h++) {
-    CellTurgorState::Cell &s = state[cells->id(home[h])];
+  for (int pos = 0; pos < (int) home.size() && accel.automatic; pos++) {
+    TurgorState::Cell &s = state[cells->id(home[pos])];
     in.probe.push_back(s.probe);
-    in.mass.push_back(cells->mass(home[h]));
+    in.mass.push_back(cells->mass(home[pos]));
     in.rate.push_back(s.rate);
-    if (junctions) in.conductance[h] += between[h];
+    if (junctions) in.conductance[pos] += between[pos];
   }
   accel.after(cycle, limit, transfer, in, every * update->dt, cells->ncell() > 0);
 }
@@ -618,17 +702,17 @@ void FixCellTurgor::control(const CellAccel::Cycle &cycle, bool limit, bool tran
    area per bond (the bond type's A, or the pair's from a junction areas file).
 ------------------------------------------------------------------------- */
 
-void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double dtw, double factor,
-                             std::vector<double> &dmass)
+void FixCellTurgor::exchange(const TurgorNetwork::Cells &in, bool transfer, double dtw,
+                             double factor, std::vector<double> &dmass)
 {
   CellRegistry &registry = cells->registry();
   const std::vector<int> &home = registry.home_cells();
   const bool counted = junctions->gather(registry, !transfer);
-  const double l = lcc.get(lmp);
-  check_lcc(l, fmt::format(" (step {})", update->ntimestep));
+  const double lcc_value = lcc.get(lmp);
+  check_lcc(lcc_value, fmt::format(" (step {})", update->ntimestep));
   // the junctions set up again when they were counted again or the home ranks changed (init)
   if (counted || network_stale) {
-    std::vector<CellNetwork::Edge> edges;
+    std::vector<TurgorNetwork::Edge> edges;
     for (const auto &j : junctions->junctions()) edges.push_back({j.i, j.j, rhow * j.area});
     network->set_edges(home, edges, [&](int c) { return registry.home(c); });
     const int mine = network->crossing();
@@ -636,22 +720,23 @@ void FixCellTurgor::exchange(const CellNetwork::Cells &in, bool transfer, double
     network_stale = false;
   }
   // g_ij = rho_w L_cc(T) A_ij (doc/model.md §5.13): rho_w A_ij on the edges, L_cc(T) here
-  network->set_scale(l * factor);
+  network->set_scale(lcc_value * factor);
   network->set_cells(in);
   exchange_stiffness = network->stiffness(dtw);
   std::vector<double> rate;
   network->rates(rate);
-  for (int h = 0; h < (int) home.size(); h++) state[cells->id(home[h])].rate += rate[h];
+  for (int pos = 0; pos < (int) home.size(); pos++) state[cells->id(home[pos])].rate += rate[pos];
   if (!transfer) return;
 
-  CellNetwork::Change change;
+  TurgorNetwork::Change change;
   if (!network->step(dtw, change))
     error->all(
         FLERR,
         "Fix cell/turgor: the water network's solver did not converge at step {} ({} iterations)",
         update->ntimestep, network->iterations());
   dmass.resize(home.size());
-  for (int h = 0; h < (int) home.size(); h++) dmass[h] = change.own[h] + change.exchange[h];
+  for (int pos = 0; pos < (int) home.size(); pos++)
+    dmass[pos] = change.own[pos] + change.exchange[pos];
   exchange_net = change.net;
   water_exchanged += change.gross;
 }
@@ -673,7 +758,7 @@ double FixCellTurgor::offset_time() const
    transfer steps only, so a run split in two continues as one
 ------------------------------------------------------------------------- */
 
-double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
+double FixCellTurgor::flux_turgor(int c, TurgorState::Cell &s, bool advance)
 {
   const double psph = cells->sph_turgor(c);
   s.turgor = psph;
@@ -691,7 +776,7 @@ double FixCellTurgor::flux_turgor(int c, CellTurgorState::Cell &s, bool advance)
    turgor (doc/model.md §6)
 ------------------------------------------------------------------------- */
 
-bool FixCellTurgor::check_limit(int c, CellTurgorState::Cell &s, double turgor, double pi,
+bool FixCellTurgor::check_limit(int c, TurgorState::Cell &s, double turgor, double pi,
                                 double demand)
 {
   const double gt = cells->mean_gt0(c);
@@ -734,7 +819,7 @@ bool FixCellTurgor::check_limit(int c, CellTurgorState::Cell &s, double turgor, 
 
 bool FixCellTurgor::turgor(tagint cell, double &pt) const
 {
-  const CellTurgorState::Cell *s = state.find(cell);
+  const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
   pt = s->turgor;
   return true;
@@ -747,7 +832,7 @@ bool FixCellTurgor::turgor(tagint cell, double &pt) const
 
 bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 {
-  const CellTurgorState::Cell *s = state.find(cell);
+  const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
   pi = osmotic_model.pressure(s->pi0, s->mass0, s->solids, mass,
                               drive.temperature > 0.0 ? drive.temperature : osmotic_model.tref,
@@ -762,7 +847,7 @@ bool FixCellTurgor::osmotic(tagint cell, double mass, double &pi) const
 
 bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 {
-  const CellTurgorState::Cell *s = state.find(cell);
+  const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
   w.moisture = s->solids > 0.0 ? mass / s->solids : 0.0;
   w.relative = s->mass0 > 0.0 ? mass / s->mass0 : 0.0;
@@ -786,14 +871,25 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
 
 double FixCellTurgor::compute_vector(int n)
 {
-  const double values[] = {
-      water_moved,         physical_time,   (double) cells->ncell(),
-      max_imbalance,       max_stiffness,   drive.temperature,
-      drive.mass_transfer, accel.value,     accel.lag_estimate,
-      accel.lag_error,     water_exchanged, exchange_net,
-      exchange_stiffness,  busiest,         drive.kind == CellDrive::AIR ? drive.temperature : 0.0,
-      exposed_flux,        exposed_area,    (double) crossing,
-      accel.edge};
+  const double values[] = {water_moved,
+                           physical_time,
+                           (double) cells->ncell(),
+                           max_imbalance,
+                           max_stiffness,
+                           drive.temperature,
+                           drive.mass_transfer,
+                           accel.value,
+                           accel.lag_estimate,
+                           accel.lag_error,
+                           water_exchanged,
+                           exchange_net,
+                           exchange_stiffness,
+                           busiest,
+                           drive.kind == TurgorDrive::AIR ? drive.temperature : 0.0,
+                           exposed_flux,
+                           exposed_area,
+                           (double) crossing,
+                           accel.edge};
   return values[n];
 }
 
@@ -813,7 +909,7 @@ int FixCellTurgor::modify_param(int narg, char **arg)
   if (narg < 2) error->all(FLERR, "Fix_modify cell/turgor: missing value after '{}'", key);
   if (key == "accel") {
     const int used = 1 + accel.parse(narg - 1, &arg[1], "Fix_modify cell/turgor");
-    if (accel.automatic && drive.kind == CellDrive::CURVE)
+    if (accel.automatic && drive.kind == TurgorDrive::CURVE)
       error->all(FLERR, "Fix_modify cell/turgor: accel auto needs the psi or air drive");
     // a transfer evaluated again at setup (setup) keeps the new accel
     accel_saved = accel.save();
@@ -831,165 +927,6 @@ int FixCellTurgor::modify_param(int narg, char **arg)
 
 /* ---------------------------------------------------------------------- */
 
-void FixCellTurgor::write_restart(FILE *fp)
-{
-  std::vector<double> cellstate;
-  const int ncell = state.gather_restart(RESTART_VERSION, cellstate);
-  if (comm->me != 0) return;
-  // version 1 (no marker) began with the number of cells >= 0; later versions with -version
-  std::vector<double> list = {(double) -RESTART_VERSION, (double) ncell, physical_time,
-                              water_moved};
-  accel.write(list);
-  list.push_back(water_exchanged);
-  list.push_back(moved_pending);
-  list.push_back(time_pending);
-  list.push_back((double) evaluated);
-  accel.write_edges(list);
-  list.insert(list.end(), cellstate.begin(), cellstate.end());
-  const int size = (int) (list.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list.data(), sizeof(double), list.size(), fp);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixCellTurgor::restart(char *buf)
-{
-  const double *list = (double *) buf;
-  const int version = CellRestart::version(list[0]);
-  CellRestart::refuse_newer(error, FLERR, "Fix cell/turgor", version, RESTART_VERSION);
-  if (version >= 2) list++;
-  const double count = list[0];
-  if (!(count >= 0.0 && count == floor(count)))
-    error->all(FLERR,
-               "Fix cell/turgor: the restart file's state (format version {}) is not valid: "
-               "number of cells = {}",
-               version, count);
-  const int n = (int) count;
-  physical_time = list[1];
-  water_moved = list[2];
-  // accel auto continues from the adapted accel and its window when the file has them (4)
-  const bool adapted = version >= 4 && accel.read(&list[3]);
-  if (version >= 5) water_exchanged = list[8];
-  if (version >= 6) moved_pending = list[9], time_pending = list[10], evaluated = (bigint) list[11];
-  if (version >= 7) accel.read_edges(&list[12]);
-  state.clear();
-  bool other_pi0 = false, other_solids = false;
-  const int nvalues = CellTurgorState::restart_values(version);
-  for (int k = 0; k < n; k++) {
-    const double *v = &list[1 + restart_globals(version) + nvalues * k];
-    // version 1 files written before the offset was stored had 4 values per cell: caught here
-    if (!(v[0] >= 1.0 && v[0] == floor(v[0]) && (v[3] == 0.0 || v[3] == 1.0)))
-      error->all(FLERR,
-                 "Fix cell/turgor: the restart file's state (format version {}) is not valid at "
-                 "cell {} of {}: ID = {}, warned = {}",
-                 version, k + 1, n, v[0], v[3]);
-    // solids from version 3 on; older files: from 'solids' and M0 at the first evaluation
-    const double solids = version >= 3 ? v[5] : 0.0;
-    CellTurgorState::Cell cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
-    if (adapted) std::copy(v + 6, v + 6 + CellAccel::NPROBE, cell.probe);
-    // every rank holds every cell until init() keeps its home cells
-    state[(tagint) v[0]] = cell;
-    other_pi0 = other_pi0 || v[2] != pi0;
-    other_solids = other_solids ||
-        (solids > 0.0 && osmotic_model.solids_fraction > 0.0 &&
-         fabs(solids - osmotic_model.solids(v[1])) > 1e-12 * solids);
-  }
-  if (other_pi0 && comm->me == 0)
-    error->warning(FLERR,
-                   "Fix cell/turgor: cells continue with the osmotic pressure pi0 stored in the "
-                   "restart file, not pi0 = {}",
-                   pi0);
-  if (other_solids && comm->me == 0)
-    error->warning(
-        FLERR,
-        "Fix cell/turgor: cells continue with the dry solids stored in the restart file, "
-        "not those of solids = {}",
-        osmotic_model.solids_fraction);
-}
-
-/* ---------------------------------------------------------------------- */
-
-int FixCellTurgor::pack_forward_comm(int n, int *list, double *buf, int, int *)
-{
-  for (int k = 0; k < n; k++) buf[k] = atom->rmass[list[k]];
-  return n;
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixCellTurgor::unpack_forward_comm(int n, int first, double *buf)
-{
-  for (int k = 0; k < n; k++) atom->rmass[first + k] = buf[k];
-}
-
-/* ----------------------------------------------------------------------
-   per atom: the waiting transfer's relative mass change (0 for atoms that get none)
-------------------------------------------------------------------------- */
-
-void FixCellTurgor::grow_arrays(int nmax)
-{
-  memory->grow(pending, nmax, "cell/turgor:pending");
-}
-
-void FixCellTurgor::copy_arrays(int i, int j, int)
-{
-  pending[j] = pending[i];
-}
-
-void FixCellTurgor::set_arrays(int i)
-{
-  pending[i] = 0.0;
-}
-
-int FixCellTurgor::pack_exchange(int i, double *buf)
-{
-  buf[0] = pending[i];
-  return 1;
-}
-
-int FixCellTurgor::unpack_exchange(int nlocal, double *buf)
-{
-  pending[nlocal] = buf[0];
-  return 1;
-}
-
-/* ----------------------------------------------------------------------
-   restart: the count of values (2) first, as every fix with per-atom restart data
-------------------------------------------------------------------------- */
-
-int FixCellTurgor::pack_restart(int i, double *buf)
-{
-  buf[0] = 2;
-  buf[1] = pending[i];
-  return 2;
-}
-
-void FixCellTurgor::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  pending[nlocal] = extra[nlocal][m + 1];
-}
-
-int FixCellTurgor::size_restart(int)
-{
-  return 2;
-}
-
-int FixCellTurgor::maxsize_restart()
-{
-  return 2;
-}
-
-double FixCellTurgor::memory_usage()
-{
-  return (double) atom->nmax * sizeof(double);
-}
-
-/* ---------------------------------------------------------------------- */
-
 const CellRegistry &FixCellTurgor::registry() const
 {
   return cells->registry();
@@ -1003,6 +940,16 @@ const CellRegistry &FixCellTurgor::registry() const
 double FixCellTurgor::arrhenius_factor(double t) const
 {
   return ea > 0.0 ? CellWater::arrhenius(ea, t, osmotic_model.tref) : 1.0;
+}
+
+/* ----------------------------------------------------------------------
+   rho_w L_P(T), the wall's water mass flux per area per water potential difference
+   (kg m^-2 s^-1 Pa^-1) that the drive turns into a cell's conductance G (doc/model.md §5.1, §5.9)
+------------------------------------------------------------------------- */
+
+double FixCellTurgor::rho_lp(double t) const
+{
+  return rhow * (lp * arrhenius_factor(t));
 }
 
 /* ----------------------------------------------------------------------

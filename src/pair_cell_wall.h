@@ -80,7 +80,8 @@ class PairCellWall : public Pair, public CellWallLoad {
   void check_start_gap();
 
   // triangles: a wall atom against the triangles of other cells' walls, selftriangles: against
-  // its own wall's triangles it is not a vertex of (doc/pair_cell_wall.md)
+  // its own wall's triangles it is not a vertex of (doc/pair_cell_wall.md;
+  // pair_cell_wall_triangles.cpp)
   int triangles;                    // 1 if any type pair has either term
   double trireach;                  // the longest reach of either term in this run
   class CellWallTriangles *tris;    // the triangles, kept by their middle angle atoms
@@ -89,6 +90,9 @@ class PairCellWall : public Pair, public CellWallLoad {
   // per atom, its nearest triangle of another cell within reach this step: d^2, 1 if the atom is
   // behind its face (else 0), the triangle's cell and the tags of a, b, c (NEAR columns); then
   // the same for its nearest own triangle that it is not a vertex of (NEAR more)
+  // columns of the nearest triangle per atom (triangles): d^2, behind, cell, tags of a, b, c; the
+  // nearest of another cell's, then (from column NEAR) of the own wall's
+  static constexpr int NEAR = 6;
   int nmax_near;
   double **nearest;
   int comm_nearest;    // 1 while reverse comm carries nearest (else the wall load)

@@ -1,16 +1,16 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   CellNetwork: water exchanged between neighbouring cells, J_ij = G_ij (psi_j - psi_i), and each
+   TurgorNetwork: water exchanged between neighbouring cells, J_ij = G_ij (psi_j - psi_i), and each
    cell's own transfer, advanced together over dt_w by one linearised implicit step on per-cell
    vectors (doc/model.md §5.13). No LAMMPS state: the caller gives the cells' water potentials,
-   their stiffnesses dpsi/dM and the junction graph (src/cell_junctions.h) and gets mass changes.
-   Distributed over an MPI communicator: each rank holds the rows of its own cells and a halo of
-   the cells of other ranks joined to them; every sum over cells is exact (CellExactSum), so the
-   result is the same bit for bit on any number of ranks.
+   their stiffnesses dpsi/dM and the junction graph (src/fix_cell_turgor_junctions.h) and gets mass
+   changes. Distributed over an MPI communicator: each rank holds the rows of its own cells and a
+   halo of the cells of other ranks joined to them; every sum over cells is exact (CellExactSum), so
+   the result is the same bit for bit on any number of ranks.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_NETWORK_H
-#define LMP_CELL_NETWORK_H
+#ifndef LMP_FIX_CELL_TURGOR_NETWORK_H
+#define LMP_FIX_CELL_TURGOR_NETWORK_H
 
 #include <mpi.h>
 
@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -62,7 +64,7 @@ class CellExactSum {
   static void carry(int64_t *digits);
 };
 
-class CellNetwork {
+class TurgorNetwork {
  public:
   // a junction between cells i < j (global cell indices) of conductance
   // g = rho_w L_cc A_ij (kg Pa^-1 s^-1)
@@ -86,7 +88,7 @@ class CellNetwork {
     double net;      // sum over cells of the exchange (kg, 0 to round-off)
   };
 
-  explicit CellNetwork(MPI_Comm comm = MPI_COMM_SELF) : world(comm) {}
+  explicit TurgorNetwork(MPI_Comm comm = MPI_COMM_SELF) : world(comm) {}
 
   // this rank's cells (global indices, ascending), the junctions with at least one end among
   // them (a junction between two ranks' cells given to both) and the rank of any cell. Collective
@@ -127,6 +129,19 @@ class CellNetwork {
 
   // v: a value per own cell, then room for the halo, which this fills from the cells' ranks
   void halo(std::vector<double> &v) const;
+
+  // step(): the solve's tolerance relative to the right-hand side
+  static constexpr double STEP_TOL = 1e-14;
+  // step()'s system on this rank's rows: S^1/2 (own then halo), C, the diagonal, its inverse, the
+  // right-hand side and the off-diagonal entries (CSR as cond)
+  struct System {
+    std::vector<double> root, factor, diag, invdiag, b, off;
+  };
+  System assemble(double dtw) const;
+  void dots(std::initializer_list<std::pair<const double *, const double *>> pairs,
+            double *out) const;
+  bool solve(const System &sys, std::vector<double> &x);
+  void finish(double dtw, const System &sys, const std::vector<double> &x, Change &change) const;
 };
 
 }    // namespace LAMMPS_NS

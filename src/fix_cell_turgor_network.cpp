@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
 ------------------------------------------------------------------------- */
 
-#include "cell_network.h"
+#include "fix_cell_turgor_network.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -92,8 +92,8 @@ void CellExactSum::allreduce(CellExactSum *sums, int count, MPI_Comm comm)
    receiver's order without a set-up exchange: both ranks hold the junctions between them
 ------------------------------------------------------------------------- */
 
-void CellNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edge> &edges,
-                            const std::function<int(int)> &rank_of)
+void TurgorNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edge> &edges,
+                              const std::function<int(int)> &rank_of)
 {
   nown = (int) cells.size();
   auto own = [&](int c) {
@@ -114,10 +114,10 @@ void CellNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edg
   global = cells;
   neighbours.clear();
   haloend.clear();
-  for (size_t h = 0; h < far.size(); h++) {
-    global.push_back(far[h].second);
-    if (h > 0 && far[h].first != far[h - 1].first) haloend.push_back(nown + (int) h);
-    if (h == 0 || far[h].first != far[h - 1].first) neighbours.push_back(far[h].first);
+  for (size_t n = 0; n < far.size(); n++) {
+    global.push_back(far[n].second);
+    if (n > 0 && far[n].first != far[n - 1].first) haloend.push_back(nown + (int) n);
+    if (n == 0 || far[n].first != far[n - 1].first) neighbours.push_back(far[n].first);
   }
   ntotal = (int) global.size();
   if (!far.empty()) haloend.push_back(ntotal);
@@ -170,7 +170,7 @@ void CellNetwork::set_edges(const std::vector<int> &cells, const std::vector<Edg
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::halo(std::vector<double> &v) const
+void TurgorNetwork::halo(std::vector<double> &v) const
 {
   const int n = (int) neighbours.size();
   std::vector<double> send(sendcells.size());
@@ -188,7 +188,7 @@ void CellNetwork::halo(std::vector<double> &v) const
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::set_cells(const Cells &cells)
+void TurgorNetwork::set_cells(const Cells &cells)
 {
   state = cells;
   psi.assign(ntotal, 0.0);
@@ -201,7 +201,7 @@ void CellNetwork::set_cells(const Cells &cells)
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::rates(std::vector<double> &rate) const
+void TurgorNetwork::rates(std::vector<double> &rate) const
 {
   rate.assign(nown, 0.0);
   for (int c = 0; c < nown; c++)
@@ -212,7 +212,7 @@ void CellNetwork::rates(std::vector<double> &rate) const
 
 /* ---------------------------------------------------------------------- */
 
-void CellNetwork::conductances(std::vector<double> &g) const
+void TurgorNetwork::conductances(std::vector<double> &g) const
 {
   g.assign(nown, 0.0);
   // L_ii = sum_j g_ij, the diagonal of the graph Laplacian (doc/model.md §5.13)
@@ -222,7 +222,7 @@ void CellNetwork::conductances(std::vector<double> &g) const
 
 /* ---------------------------------------------------------------------- */
 
-double CellNetwork::stiffness(double dtw) const
+double TurgorNetwork::stiffness(double dtw) const
 {
   double most = 0.0, all;
   // two cells relax psi_j - psi_i at the rate g (s_i + s_j) (doc/model.md §5.13)
@@ -244,63 +244,93 @@ double CellNetwork::stiffness(double dtw) const
    sums to zero to round-off (doc/model.md §5.13)
 ------------------------------------------------------------------------- */
 
-bool CellNetwork::step(double dtw, Change &change)
+bool TurgorNetwork::step(double dtw, Change &change)
 {
-  const double tol = 1e-14;
-  std::vector<double> root(ntotal), factor(nown), diag(nown), invdiag(nown), b(nown);
-  for (int c = 0; c < ntotal; c++) root[c] = sqrt(s[c]);
+  const System sys = assemble(dtw);
+  std::vector<double> x;
+  if (!solve(sys, x)) return false;
+  finish(dtw, sys, x, change);
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   the system of step() on this rank's rows: S^1/2, the own transfer's factor C, the diagonal and
+   its inverse, the right-hand side b = dt_w (r - L psi) and the off-diagonal entries
+------------------------------------------------------------------------- */
+
+TurgorNetwork::System TurgorNetwork::assemble(double dtw) const
+{
+  System sys{std::vector<double>(ntotal), std::vector<double>(nown),
+             std::vector<double>(nown),   std::vector<double>(nown),
+             std::vector<double>(nown),   std::vector<double>(other.size())};
+  for (int c = 0; c < ntotal; c++) sys.root[c] = sqrt(s[c]);
   // the system's off-diagonal entries -dt_w g_ij s_i^1/2 s_j^1/2, lower index's root first
-  std::vector<double> off(other.size());
   for (int c = 0; c < nown; c++) {
     const double z = state.z[c];
     // 1 + c = z / (1 - e^-z): dM = dt_w r (1 - e^-z) / z alone (doc/model.md §5.4)
-    factor[c] = z > 0.0 ? z / -expm1(-z) - 1.0 : 0.0;
-    diag[c] = 1.0 + factor[c];
-    b[c] = dtw * state.rate[c];
+    sys.factor[c] = z > 0.0 ? z / -expm1(-z) - 1.0 : 0.0;
+    sys.diag[c] = 1.0 + sys.factor[c];
+    sys.b[c] = dtw * state.rate[c];
     for (int k = start[c]; k < start[c + 1]; k++) {
       const int j = other[k];
       const double a = dtw * scale * cond[k];
       // + dt_w g_ij (psi_j - psi_i) on the right, dt_w g_ij s_i on the diagonal
-      b[c] += a * (psi[j] - psi[c]);
-      diag[c] += a * s[c];
-      off[k] = global[c] < global[j] ? -a * root[c] * root[j] : -a * root[j] * root[c];
+      sys.b[c] += a * (psi[j] - psi[c]);
+      sys.diag[c] += a * s[c];
+      sys.off[k] =
+          global[c] < global[j] ? -a * sys.root[c] * sys.root[j] : -a * sys.root[j] * sys.root[c];
     }
-    invdiag[c] = 1.0 / diag[c];
+    sys.invdiag[c] = 1.0 / sys.diag[c];
   }
+  return sys;
+}
 
-  // conjugate gradients on (I + C + dt_w S^1/2 L S^1/2) x = S^1/2 b
-  std::vector<double> x(nown, 0.0), r(nown), z(nown), p(ntotal, 0.0), q(nown);
-  auto dots = [&](std::initializer_list<std::pair<const double *, const double *>> pairs,
-                  double *out) {
-    CellExactSum sums[2];
-    int n = 0;
-    for (const auto &pair : pairs) {
-      for (int c = 0; c < nown; c++) sums[n].add(pair.first[c] * pair.second[c]);
-      n++;
-    }
-    CellExactSum::allreduce(sums, n, world);
-    for (int k = 0; k < n; k++) out[k] = sums[k].value();
-  };
-  for (int c = 0; c < nown; c++) r[c] = root[c] * b[c];
+/* ----------------------------------------------------------------------
+   exact dot products over all ranks' own cells of the given pairs of vectors (at most 2)
+------------------------------------------------------------------------- */
+
+void TurgorNetwork::dots(std::initializer_list<std::pair<const double *, const double *>> pairs,
+                         double *out) const
+{
+  CellExactSum sums[2];
+  int n = 0;
+  for (const auto &pair : pairs) {
+    for (int c = 0; c < nown; c++) sums[n].add(pair.first[c] * pair.second[c]);
+    n++;
+  }
+  CellExactSum::allreduce(sums, n, world);
+  for (int k = 0; k < n; k++) out[k] = sums[k].value();
+}
+
+/* ----------------------------------------------------------------------
+   conjugate gradients on (I + C + dt_w S^1/2 L S^1/2) x = S^1/2 b from x = 0, preconditioned by
+   the diagonal; false if |r| did not fall below STEP_TOL |S^1/2 b|
+------------------------------------------------------------------------- */
+
+bool TurgorNetwork::solve(const System &sys, std::vector<double> &x)
+{
+  x.assign(nown, 0.0);
+  std::vector<double> r(nown), z(nown), p(ntotal, 0.0), q(nown);
+  for (int c = 0; c < nown; c++) r[c] = sys.root[c] * sys.b[c];
   double rhs2, norms[2];
   dots({{r.data(), r.data()}}, &rhs2);
   int ncell = nown;
   MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPI_INT, MPI_SUM, world);
   const int most = std::max(2 * ncell, 1000);
   // |r|^2 < tol^2 |b|^2 (at least the smallest normal double) ends the iteration
-  const double threshold = std::max(tol * tol * rhs2, DBL_MIN);
+  const double threshold = std::max(STEP_TOL * STEP_TOL * rhs2, DBL_MIN);
   double r2 = rhs2;
   int it = 0;
   if (rhs2 > 0.0 && r2 >= threshold) {
-    for (int c = 0; c < nown; c++) p[c] = invdiag[c] * r[c];
+    for (int c = 0; c < nown; c++) p[c] = sys.invdiag[c] * r[c];
     double rz;
     dots({{r.data(), p.data()}}, &rz);
     while (it < most) {
       halo(p);
       for (int c = 0; c < nown; c++) {
         // rows in a fixed order: the diagonal, then the junctions by the other cell's index
-        double sum = diag[c] * p[c];
-        for (int k = start[c]; k < start[c + 1]; k++) sum += off[k] * p[other[k]];
+        double sum = sys.diag[c] * p[c];
+        for (int k = start[c]; k < start[c + 1]; k++) sum += sys.off[k] * p[other[k]];
         q[c] = sum;
       }
       double pq;
@@ -309,7 +339,7 @@ bool CellNetwork::step(double dtw, Change &change)
       for (int c = 0; c < nown; c++) {
         x[c] += alpha * p[c];
         r[c] -= alpha * q[c];
-        z[c] = invdiag[c] * r[c];
+        z[c] = sys.invdiag[c] * r[c];
       }
       dots({{r.data(), r.data()}, {r.data(), z.data()}}, norms);
       r2 = norms[0];
@@ -321,15 +351,24 @@ bool CellNetwork::step(double dtw, Change &change)
     }
   }
   last_iterations = it;
-  if (!(rhs2 == 0.0 || sqrt(r2 / rhs2) <= tol)) return false;
+  return rhs2 == 0.0 || sqrt(r2 / rhs2) <= STEP_TOL;
+}
 
+/* ----------------------------------------------------------------------
+   the mass changes from the solution x = S^1/2 dM: the own transfer's, and the exchange edge by
+   edge from the end-of-step potentials, applied antisymmetrically; its gross and net sums
+------------------------------------------------------------------------- */
+
+void TurgorNetwork::finish(double dtw, const System &sys, const std::vector<double> &x,
+                           Change &change) const
+{
   change.own.resize(nown);
   change.exchange.assign(nown, 0.0);
   std::vector<double> psi_end(ntotal);
   for (int c = 0; c < nown; c++) {
     // dM_own = dt_w r - C dM, psi_end = psi + s dM, dM = x / s^1/2
-    change.own[c] = dtw * state.rate[c] - factor[c] * x[c] / root[c];
-    psi_end[c] = psi[c] + root[c] * x[c];
+    change.own[c] = dtw * state.rate[c] - sys.factor[c] * x[c] / sys.root[c];
+    psi_end[c] = psi[c] + sys.root[c] * x[c];
   }
   halo(psi_end);
   CellExactSum sums[2];
@@ -348,5 +387,4 @@ bool CellNetwork::step(double dtw, Change &change)
   CellExactSum::allreduce(sums, 2, world);
   change.gross = sums[0].value();
   change.net = sums[1].value();
-  return true;
 }

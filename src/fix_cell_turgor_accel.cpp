@@ -4,7 +4,7 @@
    (doc/model.md §5.12)
 ------------------------------------------------------------------------- */
 
-#include "cell_accel.h"
+#include "fix_cell_turgor_accel.h"
 
 #include "cell_wall_triangles.h"
 
@@ -20,7 +20,7 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-CellAccel::CellAccel(LAMMPS *lmp) :
+TurgorAccel::TurgorAccel(LAMMPS *lmp) :
     Pointers(lmp), value(1.0), automatic(0), pending(0), lag_estimate(0.0), lag_error(0.0),
     edge(0.0), every(0), hold(0), open_samples(0), sealed_samples(0), tol(0.0), lo(1.0), hi(MAX),
     start(0.0), change(CHANGE), least(0.0), last(0.0), growth(0.0)
@@ -29,7 +29,7 @@ CellAccel::CellAccel(LAMMPS *lmp) :
 
 /* ---------------------------------------------------------------------- */
 
-int CellAccel::parse(int narg, char **arg, const std::string &command)
+int TurgorAccel::parse(int narg, char **arg, const std::string &command)
 {
   if (narg < 1) error->all(FLERR, "{}: missing value after 'accel'", command);
   if (strcmp(arg[0], "auto") != 0) {
@@ -90,7 +90,7 @@ int CellAccel::parse(int narg, char **arg, const std::string &command)
    a cycle ends within 250 transfers; the second half of each is sampled (doc/model.md §5.12)
 ------------------------------------------------------------------------- */
 
-CellAccel::Cycle CellAccel::cycle(bigint j, bool transfer, double offset, double step)
+TurgorAccel::Cycle TurgorAccel::cycle(bigint j, bool transfer, double offset, double step)
 {
   Cycle at;
   const double taus = offset / step;
@@ -109,8 +109,8 @@ CellAccel::Cycle CellAccel::cycle(bigint j, bool transfer, double offset, double
    rate and conductance; the last one is kept) or of the sealed window
 ------------------------------------------------------------------------- */
 
-void CellAccel::sample(double *p, const Cycle &at, double turgor, double rate,
-                       double conductance) const
+void TurgorAccel::sample(double *p, const Cycle &at, double turgor, double rate,
+                         double conductance) const
 {
   if (!at.sealed && open_samples == 1) {
     for (int k = 0; k < NPROBE; k++) p[k] = 0.0;
@@ -140,7 +140,7 @@ void CellAccel::sample(double *p, const Cycle &at, double turgor, double rate,
    (doc/model.md §5.12); false without enough samples or flux
 ------------------------------------------------------------------------- */
 
-bool CellAccel::lag(const double *p, bigint open, double flux, double &e, double &se) const
+bool TurgorAccel::lag(const double *p, bigint open, double flux, double &e, double &se) const
 {
   const double n = open_samples, m = sealed_samples;
   if (n < 3 || m < 2 || p[RATE] == 0.0) return false;
@@ -165,12 +165,12 @@ bool CellAccel::lag(const double *p, bigint open, double flux, double &e, double
 
 /* ----------------------------------------------------------------------
    the first accel of a cell: a = tol tau_w / tau_m with the water relaxation time
-   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the offset
-   time tau, the one mechanical time known before the run; the window then measures the lag
+   tau_w = 1 / (G (eps/M + slope)) (Boyle-van 't Hoff, doc/model.md §9.3) and, for tau_m, the
+   offset time tau, the one mechanical time known before the run; the window then measures the lag
 ------------------------------------------------------------------------- */
 
-double CellAccel::first(double conductance, double slope, double eps, double mass,
-                        double offset) const
+double TurgorAccel::first(double conductance, double slope, double eps, double mass,
+                          double offset) const
 {
   // 1/tau_w = G (eps/M + slope), dP/dM = eps/M for a cell full of fluid
   const double relax = conductance * (eps / mass + slope);
@@ -182,7 +182,7 @@ double CellAccel::first(double conductance, double slope, double eps, double mas
    Neo-Hookean wall when the bond style gives G t0 (doc/model.md §6, §9.3)
 ------------------------------------------------------------------------- */
 
-double CellAccel::modulus(double fluid, double gt, double area0, double area)
+double TurgorAccel::modulus(double fluid, double gt, double area0, double area)
 {
   if (!(gt > 0.0 && area0 > 0.0)) return fluid;
   const double r0 = sqrt(area0 / (4.0 * MathConst::MY_PI));
@@ -195,7 +195,7 @@ double CellAccel::modulus(double fluid, double gt, double area0, double area)
 
 /* ---------------------------------------------------------------------- */
 
-double CellAccel::begin(double smallest)
+double TurgorAccel::begin(double smallest)
 {
   // the first accel of auto: from the cells' state, or 'start' (doc/model.md §5.12)
   const double a0 = start > 0.0 ? start : smallest;
@@ -214,7 +214,7 @@ double CellAccel::begin(double smallest)
    /2, the most restrictive cell deciding, within [min, max] (doc/model.md §5.12)
 ------------------------------------------------------------------------- */
 
-void CellAccel::adapt(bigint open, const std::vector<const double *> &probes, bool cells)
+void TurgorAccel::adapt(bigint open, const std::vector<const double *> &probes, bool cells)
 {
   double factor = cells ? 2.0 : 1.0;
   bool none = true;
@@ -257,36 +257,37 @@ void CellAccel::adapt(bigint open, const std::vector<const double *> &probes, bo
 
 /* ---------------------------------------------------------------------- */
 
-void CellAccel::after(const Cycle &at, bool bound, bool transfer, const Home &home, double step,
-                      bool cells)
+void TurgorAccel::after(const Cycle &at, bool bound, bool transfer, const Home &home, double step,
+                        bool cells)
 {
   if (!automatic) {
     if (transfer) limit({}, {}, step, true);
     return;
   }
   if (at.sample)
-    for (size_t h = 0; h < home.probe.size(); h++)
-      sample(home.probe[h], at, home.turgor[h], home.rate[h], home.conductance[h]);
+    for (size_t pos = 0; pos < home.probe.size(); pos++)
+      sample(home.probe[pos], at, home.turgor[pos], home.rate[pos], home.conductance[pos]);
   if (transfer && at.position == at.every + at.hold - 1)
     adapt(at.every, std::vector<const double *>(home.probe.begin(), home.probe.end()), cells);
   if (bound) limit(home.mass, home.rate, step, transfer);
 }
 
 /* ----------------------------------------------------------------------
-   the ceiling of accel for the next transfers (doc/fix_cell_turgor.md, Safe bridging): each cell's water changes by
-   at most 'change' of itself per transfer, and in the last half of its allowance (1.5 x the
-   shortest longest edge since the start; pair cell/sph stops a run at 1.5 x the longest at the
-   run's start) the longest wall edge grows by at most 'change' x the room left: at most halved
-   per transfer; never below 'min'
+   the ceiling of accel for the next transfers (doc/fix_cell_turgor.md, Safe bridging): each cell's
+   water changes by at most 'change' of itself per transfer, and in the last half of its allowance
+   (1.5 x the shortest longest edge since the start; pair cell/sph stops a run at 1.5 x the longest
+   at the run's start) the longest wall edge grows by at most 'change' x the room left: at most
+   halved per transfer; never below 'min'
 ------------------------------------------------------------------------- */
 
-void CellAccel::limit(const std::vector<double> &mass, const std::vector<double> &rate, double step,
-                      bool transfer)
+void TurgorAccel::limit(const std::vector<double> &mass, const std::vector<double> &rate,
+                        double step, bool transfer)
 {
   double ceiling = HUGE_VAL, all;
   // |dM|/M = a N dt |dM/dt| / M <= change
-  for (size_t h = 0; h < mass.size(); h++)
-    if (rate[h] != 0.0) ceiling = std::min(ceiling, change * mass[h] / (step * fabs(rate[h])));
+  for (size_t pos = 0; pos < mass.size(); pos++)
+    if (rate[pos] != 0.0)
+      ceiling = std::min(ceiling, change * mass[pos] / (step * fabs(rate[pos])));
   MPI_Allreduce(&ceiling, &all, 1, MPI_DOUBLE, MPI_MIN, world);
   double a = std::min(value, all);
   // the longest wall edge as pair cell/sph's guard measures it
@@ -310,7 +311,7 @@ void CellAccel::limit(const std::vector<double> &mass, const std::vector<double>
 
 /* ---------------------------------------------------------------------- */
 
-void CellAccel::write(std::vector<double> &list) const
+void TurgorAccel::write(std::vector<double> &list) const
 {
   list.insert(list.end(),
               {automatic ? value : 0.0, (double) open_samples, (double) sealed_samples,
@@ -321,7 +322,7 @@ void CellAccel::write(std::vector<double> &list) const
    accel auto continues from the adapted accel and its window when the file has them
 ------------------------------------------------------------------------- */
 
-bool CellAccel::read(const double *v)
+bool TurgorAccel::read(const double *v)
 {
   if (!(v[0] > 0.0 && automatic)) return false;
   value = std::min(hi, std::max(lo, v[0]));

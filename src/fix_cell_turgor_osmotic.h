@@ -6,8 +6,8 @@
    turgor_gab_*. pressure() is a pure function of the cell's state.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_OSMOTIC_H
-#define LMP_CELL_OSMOTIC_H
+#ifndef LMP_FIX_CELL_TURGOR_OSMOTIC_H
+#define LMP_FIX_CELL_TURGOR_OSMOTIC_H
 
 #include "pointers.h"
 
@@ -17,9 +17,9 @@ namespace LAMMPS_NS {
 
 class CellParams;
 
-class CellOsmotic : protected Pointers {
+class TurgorOsmotic : protected Pointers {
  public:
-  CellOsmotic(class LAMMPS *, const std::string &command);
+  TurgorOsmotic(class LAMMPS *, const std::string &command);
 
   // the keyword arg[0] of narg arguments if it is one of this class's: the arguments it used
   // (keyword and values), else 0

@@ -9,8 +9,8 @@
    fix's per-cell state; this class owns the global state and the formulas.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_ACCEL_H
-#define LMP_CELL_ACCEL_H
+#ifndef LMP_FIX_CELL_TURGOR_ACCEL_H
+#define LMP_FIX_CELL_TURGOR_ACCEL_H
 
 #include "pointers.h"
 
@@ -19,7 +19,7 @@
 
 namespace LAMMPS_NS {
 
-class CellAccel : protected Pointers {
+class TurgorAccel : protected Pointers {
  public:
   // per cell: P_T shifted by its first sample, sums over the open window's samples (t = position,
   // y = P_T), the rate and conductance of its last transfer, sums over the sealed window's samples
@@ -40,7 +40,7 @@ class CellAccel : protected Pointers {
   // longest wall edge's growth far from its allowance
   static constexpr double CHANGE = 1e-3;
 
-  CellAccel(class LAMMPS *);
+  TurgorAccel(class LAMMPS *);
 
   // the values after 'accel': a number, or auto tol [min a] [max a] [start a] [every n] [hold n]
   // [change c]; returns how many it used

@@ -7,8 +7,8 @@
    them; with cooling, cool() sets T to the surface temperature of the heat balance (§5.14).
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_DRIVE_H
-#define LMP_CELL_DRIVE_H
+#ifndef LMP_FIX_CELL_TURGOR_DRIVE_H
+#define LMP_FIX_CELL_TURGOR_DRIVE_H
 
 #include "cell_quantity.h"
 #include "cell_water.h"
@@ -19,10 +19,10 @@
 
 namespace LAMMPS_NS {
 
-class CellDrive : protected Pointers {
+class TurgorDrive : protected Pointers {
  public:
   enum Kind { PSI = 0, AIR = 1, CURVE = 2 };
-  CellDrive(class LAMMPS *, const std::string &command);
+  TurgorDrive(class LAMMPS *, const std::string &command);
 
   // the keyword arg[0] of narg arguments if it is one of this class's: the arguments it used
   // (keyword and values), else 0; tref: the reference temperature so far (the check of air)
@@ -47,20 +47,20 @@ class CellDrive : protected Pointers {
   struct Flux {
     double conductance, rate, psi_surface;
   };
-  // of a cell at psi_cell with wall conductance gw = rho_w L_P(T) per area, wall area A, area of
-  // its surface group's triangles, fluid mass M and M0, over a transfer of dtw
-  Flux flux(double psi_cell, double gw, double area, double surface_area, double mass, double mass0,
-            double dtw) const
+  // of a cell at psi_cell with rho_lp = rho_w L_P(T) of its wall, wall area A, area of its
+  // surface group's triangles, fluid mass M and M0, over a transfer of dtw
+  Flux flux(double psi_cell, double rho_lp, double area, double surface_area, double mass,
+            double mass0, double dtw) const
   {
     if (kind == AIR) {
       // wall and air film in series on the exposed area (doc/model.md §5.8)
       const double exposed = exposed_area(area, surface_area);
-      const auto air = CellWater::air_flux(psi_cell, temperature, gw, hm, rho_sat, rho_air);
-      return {exposed * air.conductance, -exposed * air.flux, air.psi_surface};
+      const auto air = CellWater::air_flux(psi_cell, temperature, rho_lp, hm, rho_sat, rho_air);
+      return {exposed * air.dflux, -exposed * air.flux, air.psi_surface};
     }
     if (kind == PSI) {
       // dM/dt = rho_w L_P A (psi_ext - psi_cell) (doc/model.md §5.1)
-      const double conductance = gw * area;
+      const double conductance = rho_lp * area;
       return {conductance, conductance * (psi_ext - psi_cell), psi_ext};
     }
     // the curve: M0 X/X0(t + dtw) at the end of the transfer (doc/model.md §5.10)

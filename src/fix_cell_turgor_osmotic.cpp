@@ -4,7 +4,7 @@
    isotherm of the dry solids (doc/model.md §5.5, §5.10)
 ------------------------------------------------------------------------- */
 
-#include "cell_osmotic.h"
+#include "fix_cell_turgor_osmotic.h"
 
 #include "cell_args.h"
 #include "cell_params.h"
@@ -17,7 +17,7 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-CellOsmotic::CellOsmotic(LAMMPS *lmp, const std::string &command) :
+TurgorOsmotic::TurgorOsmotic(LAMMPS *lmp, const std::string &command) :
     Pointers(lmp), tref(298.15), solids_fraction(0.0), command(command), law(FIXED), isotherm(0),
     gab_xm(0.0), gab_c(0.0), gab_k(0.0)
 {
@@ -27,7 +27,7 @@ CellOsmotic::CellOsmotic(LAMMPS *lmp, const std::string &command) :
    Tref T, solids w_s, isotherm gab Xm C K | none, osmotic fixed | vanthoff
 ------------------------------------------------------------------------- */
 
-int CellOsmotic::parse(int narg, char **arg)
+int TurgorOsmotic::parse(int narg, char **arg)
 {
   const std::string key = arg[0];
   if (key != "Tref" && key != "solids" && key != "isotherm" && key != "osmotic") return 0;
@@ -68,7 +68,7 @@ int CellOsmotic::parse(int narg, char **arg)
 
 /* ---------------------------------------------------------------------- */
 
-void CellOsmotic::read(const CellParams &params, const std::string &file)
+void TurgorOsmotic::read(const CellParams &params, const std::string &file)
 {
   if (params.has("turgor_solids")) solids_fraction = params.positive("turgor_solids");
   if (params.has("turgor_gab_Xm") || params.has("turgor_gab_C") || params.has("turgor_gab_K")) {
@@ -84,7 +84,7 @@ void CellOsmotic::read(const CellParams &params, const std::string &file)
 
 /* ---------------------------------------------------------------------- */
 
-void CellOsmotic::check() const
+void TurgorOsmotic::check() const
 {
   if (isotherm && solids_fraction == 0.0)
     error->all(FLERR,
@@ -100,7 +100,7 @@ void CellOsmotic::check() const
 
 /* ---------------------------------------------------------------------- */
 
-double CellOsmotic::solids(double mass0) const
+double TurgorOsmotic::solids(double mass0) const
 {
   // S = M0 w_s / (1 - w_s): the fluid the fix first sees is the fresh cell's water (§5.10)
   return solids_fraction > 0.0 ? mass0 * solids_fraction / (1.0 - solids_fraction) : 0.0;
@@ -111,8 +111,8 @@ double CellOsmotic::solids(double mass0) const
    sorption pressure -(R T/V_w) ln a_GAB(X), X = M/S (doc/model.md §5.5, §5.10)
 ------------------------------------------------------------------------- */
 
-double CellOsmotic::pressure(double pi0, double mass0, double solids, double mass, double t,
-                             double *slope) const
+double TurgorOsmotic::pressure(double pi0, double mass0, double solids, double mass, double t,
+                               double *slope) const
 {
   const bool vanthoff = law == VANTHOFF && mass0 > 0.0;
   // pi = pi0 (T/Tref) M0/M (van 't Hoff, non-permeating solutes)

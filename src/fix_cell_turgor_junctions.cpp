@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
 ------------------------------------------------------------------------- */
 
-#include "cell_junctions.h"
+#include "fix_cell_turgor_junctions.h"
 
 #include "atom.h"
 #include "bond.h"
@@ -21,8 +21,8 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-CellJunctions::CellJunctions(LAMMPS *lmp, const std::string &command_in, int bondtype,
-                             const std::string &areas) :
+TurgorJunctions::TurgorJunctions(LAMMPS *lmp, const std::string &command_in, int bondtype,
+                                 const std::string &areas) :
     Pointers(lmp),
     command(command_in), type(bondtype), area(0.0), counted(-1), areas_file(areas)
 {
@@ -40,7 +40,7 @@ CellJunctions::CellJunctions(LAMMPS *lmp, const std::string &command_in, int bon
    contact area per bond. Read on rank 0, broadcast.
 ------------------------------------------------------------------------- */
 
-void CellJunctions::read_areas()
+void TurgorJunctions::read_areas()
 {
   std::vector<double> flat;
   if (comm->me == 0) {
@@ -90,7 +90,7 @@ void CellJunctions::read_areas()
 
 /* ---------------------------------------------------------------------- */
 
-void CellJunctions::init()
+void TurgorJunctions::init()
 {
   Bond *lamella = force->bond_match("cell/lamella");
   bool owned = lamella && lamella->setflag && lamella->setflag[type];
@@ -117,7 +117,7 @@ void CellJunctions::init()
    the one with the lower ID counts it; broken bonds have type 0
 ------------------------------------------------------------------------- */
 
-bigint CellJunctions::conducting() const
+bigint TurgorJunctions::conducting() const
 {
   const int *num_bond = atom->num_bond;
   int **bond_type = atom->bond_type;
@@ -134,7 +134,7 @@ bigint CellJunctions::conducting() const
 
 /* ---------------------------------------------------------------------- */
 
-bool CellJunctions::gather(CellRegistry &registry, bool recount)
+bool TurgorJunctions::gather(CellRegistry &registry, bool recount)
 {
   const bigint now = conducting();
   if (!recount && now == counted) return false;

@@ -3,7 +3,7 @@
    fix cell/turgor's per-cell state on the cells' home ranks (doc/model.md §5.2)
 ------------------------------------------------------------------------- */
 
-#include "cell_turgor_state.h"
+#include "fix_cell_turgor_state.h"
 
 #include "cell_registry.h"
 #include "comm.h"
@@ -17,18 +17,18 @@ static const int STATE_VALUES = 19;
 
 /* ---------------------------------------------------------------------- */
 
-CellTurgorState::CellTurgorState(LAMMPS *lmp) : Pointers(lmp) {}
+TurgorState::TurgorState(LAMMPS *lmp) : Pointers(lmp) {}
 
 /* ---------------------------------------------------------------------- */
 
-int CellTurgorState::restart_values(int version)
+int TurgorState::restart_values(int version)
 {
   return version >= 4 ? 16 : (version >= 3 ? 6 : 5);
 }
 
 /* ---------------------------------------------------------------------- */
 
-const CellTurgorState::Cell *CellTurgorState::find(tagint id) const
+const TurgorState::Cell *TurgorState::find(tagint id) const
 {
   auto it = cells.find(id);
   return it == cells.end() ? nullptr : &it->second;
@@ -36,8 +36,7 @@ const CellTurgorState::Cell *CellTurgorState::find(tagint id) const
 
 /* ---------------------------------------------------------------------- */
 
-void CellTurgorState::keep_home(const std::vector<double> &list, const CellRegistry &reg,
-                                double pi0)
+void TurgorState::keep_home(const std::vector<double> &list, const CellRegistry &reg, double pi0)
 {
   cells.clear();
   for (size_t at = 0; at < list.size(); at += STATE_VALUES) {
@@ -46,10 +45,10 @@ void CellTurgorState::keep_home(const std::vector<double> &list, const CellRegis
       const double *v = &list[at];
       Cell &s = cells[(tagint) v[0]];
       s = Cell{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
-      std::copy(v + 6, v + 6 + CellAccel::NPROBE, s.probe);
-      s.turgor = v[6 + CellAccel::NPROBE];
-      s.psi_surface = v[7 + CellAccel::NPROBE];
-      s.rate = v[8 + CellAccel::NPROBE];
+      std::copy(v + 6, v + 6 + TurgorAccel::NPROBE, s.probe);
+      s.turgor = v[6 + TurgorAccel::NPROBE];
+      s.psi_surface = v[7 + TurgorAccel::NPROBE];
+      s.rate = v[8 + TurgorAccel::NPROBE];
     }
   }
   for (int c : reg.home_cells())
@@ -60,7 +59,7 @@ void CellTurgorState::keep_home(const std::vector<double> &list, const CellRegis
 
 /* ---------------------------------------------------------------------- */
 
-int CellTurgorState::gather_restart(int version, std::vector<double> &list) const
+int TurgorState::gather_restart(int version, std::vector<double> &list) const
 {
   std::vector<double> all;
   gather(false, all);
@@ -78,14 +77,14 @@ int CellTurgorState::gather_restart(int version, std::vector<double> &list) cons
    solids, the accel auto sums; full: + the last evaluation's turgor, psi_surface and rate
 ------------------------------------------------------------------------- */
 
-void CellTurgorState::pack(std::vector<double> &list, bool full) const
+void TurgorState::pack(std::vector<double> &list, bool full) const
 {
   list.clear();
   for (const auto &kv : cells) {
     const Cell &s = kv.second;
     list.insert(list.end(),
                 {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
-    list.insert(list.end(), s.probe, s.probe + CellAccel::NPROBE);
+    list.insert(list.end(), s.probe, s.probe + TurgorAccel::NPROBE);
     if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
   }
 }
@@ -94,7 +93,7 @@ void CellTurgorState::pack(std::vector<double> &list, bool full) const
    every rank's cell states (full with everywhere) on every rank, or on rank 0 only
 ------------------------------------------------------------------------- */
 
-void CellTurgorState::gather(bool everywhere, std::vector<double> &list) const
+void TurgorState::gather(bool everywhere, std::vector<double> &list) const
 {
   std::vector<double> mine;
   pack(mine, everywhere);

@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   CellJunctions: which cells touch, from the unbroken junction bonds of one bond_style
+   TurgorJunctions: which cells touch, from the unbroken junction bonds of one bond_style
    cell/lamella type between atoms of two cells, counted once per bond across ranks (newton_bond
    on or off) and sent to the home ranks of the two cells (doc/model.md §5.2); each bond stands
    for the junction area A of its type, or for its pair's contact area over its bonds from a
@@ -8,8 +8,8 @@
    'exchange' for the water network.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_JUNCTIONS_H
-#define LMP_CELL_JUNCTIONS_H
+#ifndef LMP_FIX_CELL_TURGOR_JUNCTIONS_H
+#define LMP_FIX_CELL_TURGOR_JUNCTIONS_H
 
 #include "pointers.h"
 
@@ -20,7 +20,7 @@
 
 namespace LAMMPS_NS {
 
-class CellJunctions : protected Pointers {
+class TurgorJunctions : protected Pointers {
  public:
   // cells i < j (indices of the registry's cells) joined by this many bonds through this junction
   // area (m^2)
@@ -30,7 +30,8 @@ class CellJunctions : protected Pointers {
   };
 
   // areas: a cellgen tissue .junctions file, or empty for the bond type's A
-  CellJunctions(class LAMMPS *, const std::string &command, int bondtype, const std::string &areas);
+  TurgorJunctions(class LAMMPS *, const std::string &command, int bondtype,
+                  const std::string &areas);
   // checks that the bond type is of bond_style cell/lamella, takes its junction area per bond
   void init();
   double bond_area() const { return area; }

@@ -5,10 +5,10 @@
    file, and the per-cell layout of each restart format version
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CELL_TURGOR_STATE_H
-#define LMP_CELL_TURGOR_STATE_H
+#ifndef LMP_FIX_CELL_TURGOR_STATE_H
+#define LMP_FIX_CELL_TURGOR_STATE_H
 
-#include "cell_accel.h"
+#include "fix_cell_turgor_accel.h"
 #include "pointers.h"
 
 #include <map>
@@ -18,7 +18,7 @@ namespace LAMMPS_NS {
 
 class CellRegistry;
 
-class CellTurgorState : protected Pointers {
+class TurgorState : protected Pointers {
  public:
   struct Cell {
     double mass0;                // fluid mass when the fix first saw the cell (kg)
@@ -28,13 +28,13 @@ class CellTurgorState : protected Pointers {
     double solids;               // dry solids S (kg), 0 without 'solids'
     double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
     double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
-    double probe[CellAccel::NPROBE];    // accel auto: the cycle's sums
+    double probe[TurgorAccel::NPROBE];    // accel auto: the cycle's sums
   };
 
-  CellTurgorState(class LAMMPS *);
+  TurgorState(class LAMMPS *);
 
   // restart values per cell of format version: ID, mass0, pi0, warned, offset (versions 1, 2),
-  // solids (3), the accel auto cycle's sums (4: CellAccel::NPROBE = 10 values)
+  // solids (3), the accel auto cycle's sums (4: TurgorAccel::NPROBE = 10 values)
   static int restart_values(int version);
 
   Cell &operator[](tagint id) { return cells[id]; }

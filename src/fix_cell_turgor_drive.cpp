@@ -5,7 +5,7 @@
    (doc/model.md §5.1, §5.7-5.10, §5.14)
 ------------------------------------------------------------------------- */
 
-#include "cell_drive.h"
+#include "fix_cell_turgor_drive.h"
 
 #include "cell_args.h"
 #include "cell_limits.h"
@@ -20,7 +20,7 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-CellDrive::CellDrive(LAMMPS *lmp, const std::string &command) :
+TurgorDrive::TurgorDrive(LAMMPS *lmp, const std::string &command) :
     Pointers(lmp), kind(PSI), cooling(0), surface_group(-1), temperature(0.0), mass_transfer(0.0),
     psi_ext(0.0), target(0.0), air_temperature(0.0),
     command(command), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
@@ -34,7 +34,7 @@ CellDrive::CellDrive(LAMMPS *lmp, const std::string &command) :
    cooling yes|no
 ------------------------------------------------------------------------- */
 
-int CellDrive::parse(int narg, char **arg, double tref)
+int TurgorDrive::parse(int narg, char **arg, double tref)
 {
   const std::string key = arg[0];
   if (key != "psi" && key != "air" && key != "curve" && key != "temp" && key != "cooling") return 0;
@@ -104,7 +104,7 @@ int CellDrive::parse(int narg, char **arg, double tref)
 
 /* ---------------------------------------------------------------------- */
 
-void CellDrive::check(double tref)
+void TurgorDrive::check(double tref)
 {
   if (drives.find(' ', 1) != std::string::npos)
     error->all(FLERR, "{}: give one drive of psi, air and curve, not{}", command, drives);
@@ -123,7 +123,7 @@ void CellDrive::check(double tref)
 
 /* ---------------------------------------------------------------------- */
 
-void CellDrive::init()
+void TurgorDrive::init()
 {
   for (CellQuantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
     in->resolve(lmp, command + ": variable");
@@ -131,7 +131,7 @@ void CellDrive::init()
 
 /* ---------------------------------------------------------------------- */
 
-void CellDrive::modify_psi(const char *arg)
+void TurgorDrive::modify_psi(const char *arg)
 {
   if (kind != PSI)
     error->all(FLERR, "Fix_modify cell/turgor: psi needs the psi drive (this fix has {})",
@@ -143,7 +143,7 @@ void CellDrive::modify_psi(const char *arg)
 
 /* ---------------------------------------------------------------------- */
 
-void CellDrive::evaluate(double &time, double advance)
+void TurgorDrive::evaluate(double &time, double advance)
 {
   const std::string step = fmt::format(" (step {})", update->ntimestep);
   const double t = temp.get(lmp);
@@ -176,7 +176,7 @@ void CellDrive::evaluate(double &time, double advance)
    the cells and their surface at T: rho_v,sat(T) and the air's water potential there
 ------------------------------------------------------------------------- */
 
-void CellDrive::surface(double t)
+void TurgorDrive::surface(double t)
 {
   temperature = t;
   rho_sat = CellWater::saturation_density(t);
@@ -193,7 +193,7 @@ void CellDrive::surface(double t)
    from the same bracket at every evaluation (no state carried between transfers)
 ------------------------------------------------------------------------- */
 
-void CellDrive::cool(const std::function<double()> &mean_flux)
+void TurgorDrive::cool(const std::function<double()> &mean_flux)
 {
   const double tair = air_temperature;
   const double hc = CellWater::heat_transfer(tair, hm);
@@ -248,7 +248,7 @@ void CellDrive::cool(const std::function<double()> &mean_flux)
    cooling: the air temperature within the range of the heat balance's properties
 ------------------------------------------------------------------------- */
 
-void CellDrive::check_cooling(double t) const
+void TurgorDrive::check_cooling(double t) const
 {
   if (!(t > CellWater::TRIPLE_T && t < CellWater::COOLING_TMAX))
     error->all(FLERR,
@@ -262,7 +262,7 @@ void CellDrive::check_cooling(double t) const
    Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
 ------------------------------------------------------------------------- */
 
-double CellDrive::flow_transfer(double t, double u, double l) const
+double TurgorDrive::flow_transfer(double t, double u, double l) const
 {
   if (!(u >= 0.0)) error->all(FLERR, "{}: air speed U = {} m/s must be >= 0", command, u);
   if (!(l > 0.0)) error->all(FLERR, "{}: sample length L = {} m must be > 0", command, l);
@@ -281,11 +281,11 @@ double CellDrive::flow_transfer(double t, double u, double l) const
 }
 
 /* ----------------------------------------------------------------------
-   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <= CellLimits::HM_MAX; 'when'
-   ends the message
+   air temperature T > 0 K (and below the critical point), 0 < RH <= 1, 0 <= h_m <=
+   CellLimits::HM_MAX; 'when' ends the message
 ------------------------------------------------------------------------- */
 
-void CellDrive::check_air(double t, double rh, double hm, const std::string &when) const
+void TurgorDrive::check_air(double t, double rh, double hm, const std::string &when) const
 {
   if (!(t > 0.0)) error->all(FLERR, "{}: air temperature T = {} K must be > 0{}", command, t, when);
   if (!(t < CellWater::CRITICAL_T))
@@ -303,7 +303,7 @@ void CellDrive::check_air(double t, double rh, double hm, const std::string &whe
    the cells' temperature: 0 < T < the critical point of water; 'when' ends the message
 ------------------------------------------------------------------------- */
 
-void CellDrive::check_temperature(double t, const std::string &when) const
+void TurgorDrive::check_temperature(double t, const std::string &when) const
 {
   if (!(t > 0.0)) error->all(FLERR, "{}: temperature T = {} K must be > 0{}", command, t, when);
   if (!(t < CellWater::CRITICAL_T))
@@ -316,7 +316,7 @@ void CellDrive::check_temperature(double t, const std::string &when) const
    (doc/fix_cell_turgor.md); 'who' begins the message, 'when' ends it
 ------------------------------------------------------------------------- */
 
-void CellDrive::check_psi(double value, const std::string &who, const std::string &when) const
+void TurgorDrive::check_psi(double value, const std::string &who, const std::string &when) const
 {
   if (!(value >= -CellLimits::PSI_MAX && value <= CellLimits::PSI_MAX))
     error->all(FLERR, "{}: water potential psi = {} Pa must be in [-1e9, 1e9] Pa{}", who, value,
