@@ -13,7 +13,7 @@
 # "1092 0.015 1 0.25" beside the reference gives the noise floor of the comparison). The first point
 # is the reference. Default:
 #   bench/drying_error.sh "1092 0.015" "1092 0.03" "642 0.03" "312 0.015" "312 0.03" "312 0.06"
-# Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying_cell/cell.lmp), 1092 the
+# Resolutions: NWALL 312 is the CI cell (450 fluid asked for, tests/drying/cell.lmp), 1092 the
 # seed (1624 asked for, 1647 placed); any other NWALL asks cellgen for 1624 (NWALL/1091)^1.5 fluid atoms (the seed's ratio of fluid to wall
 # spacing), and h, dt and the contact size scale with the spacings it reports (h = 12.2 um and
 # dt = 1e-8 s at the seed's 1647 fluid atoms; 12000 uptake and 2000 sealed steps x 1e-8 s / dt; the

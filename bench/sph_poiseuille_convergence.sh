@@ -2,7 +2,7 @@
 # Accuracy of pair_style cell/sph against the plane Poiseuille start-up series solution (Morris,
 # Fox & Zhu 1997): L2 error of v_x(y) at t = 0.0225, 0.1125 and 0.225 L^2/nu for each kernel and
 # h/dx at N = 20, 40, 80 particle spacings across the channel, with the wall-clock time of each
-# run (bench/sph_poiseuille.lmp, one rank). The CI test (tests/pair_sph/
+# run (bench/sph_poiseuille.lmp, one rank). The CI test (tests/pair_cell_sph/
 # poiseuille_startup_matches_series.in) checks two of these rows.
 #
 #   bash bench/sph_poiseuille_convergence.sh [N values (default "20 40 80")]
