@@ -22,6 +22,8 @@ def tau(rows, hi=0.6, lo=0.1):
     g0 = rows[0][1]
     pts = [(r[0], math.log(r[1])) for r in rows if lo * g0 < r[1] < hi * g0]
     n = len(pts)
+    if n < 2:    # a run too short to relax to 60 % (TEND): no fit
+        return float("nan")
     mt = sum(p[0] for p in pts) / n
     my = sum(p[1] for p in pts) / n
     b = sum((p[0] - mt) * (p[1] - my) for p in pts) / sum((p[0] - mt) ** 2 for p in pts)

@@ -133,7 +133,8 @@ for c in ("no", "yes"):
         text = open(f"tissue_{c}/log.lammps").read()
     except OSError:
         continue
-    box = re.search(r"box ([0-9.e+-]+) x ([0-9.e+-]+) m,", text)
+    # the box of the settled slab (in.settle's print), which in.tissue continues from
+    box = re.search(r"box ([0-9.e+-]+) x ([0-9.e+-]+) m,", open(f"tissue_{c}/log.settle").read())
     area = float(box.group(1)) * float(box.group(2))
     lines = text.splitlines()
     head = [i for i, l in enumerate(lines) if l.split()[:3] == ["Step", "CPU", "v_t"]]
