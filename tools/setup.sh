@@ -59,7 +59,8 @@ sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 
 packages=(build-essential cmake pkg-config openmpi-bin libopenmpi-dev libpng-dev zlib1g-dev
-  libeigen3-dev libqhull-dev voro++-dev gnuplot-nox python3 dpkg-dev clang-format)
+  libeigen3-dev libqhull-dev voro++-dev gnuplot-nox python3 dpkg-dev clang-format
+  libgtest-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
