@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scaling of a drying tissue on this machine (doc/tissue_scaling.md): particle-steps per second per
+# Scaling of a drying tissue on this machine (doc/notes/2026-12-07-tissue-scaling.md): particle-steps per second per
 # core of the tissue of tests/tissue/tissue.lmp (160 um cells, 16 um spacing, all the physics of
 # examples/tissue) for a periodic block and a slab of 27 and 64 cells on 1 and 2 ranks (2 ranks:
 # without and with fix balance shift), the 2-rank efficiency, the memory per particle from LAMMPS's
