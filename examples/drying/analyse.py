@@ -295,8 +295,6 @@ def main(tags):
               f"fluid atoms within dx/2 of another at most {max(x[4] for x in st):.3f} (at the end "
               f"{st[-1][4]:.3f}); share of wall atoms with fluid within h/2.5 + 0.45 h at least "
               f"{min(x[5] for x in st):.3f} (at the end {st[-1][5]:.3f})")
-
-
     figures(tags, names)
 
 

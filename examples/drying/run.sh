@@ -27,6 +27,12 @@ accel=${ACCEL:-auto 0.05}
 cooling=${COOLING:-yes}
 elong=${ELONG:-}
 out=${OUT:-$here/out}
+for air in $airs; do    # each T:RH, checked before anything runs
+  if [[ "$air" != *:* ]] || ! awk -v t="${air%%:*}" -v r="${air#*:}" \
+    'BEGIN { exit !(t + 0 == t && r + 0 == r && t > -273.15 && r >= 0 && r < 1) }'; then
+    echo "[drying] AIRS: '$air' is not T:RH (T in C above -273.15, 0 <= RH < 1)" >&2; exit 1
+  fi
+done
 mkdir -p "$out"
 cd "$out"
 rm -f dry_*.dat final_*.txt wall_*.dump fluid_*.dump pic_*.png cut_*.step fig_*.png summary.txt \
@@ -56,9 +62,6 @@ esac
 tags=()
 for air in $airs; do
   tc=${air%%:*} rh=${air#*:}
-  if [[ "$air" != *:* ]] || ! awk -v t="$tc" -v r="$rh" 'BEGIN { exit !(t + 0 == t && r + 0 == r && t > -273.15 && r >= 0 && r < 1) }'; then
-    echo "[drying] AIRS: '$air' is not T:RH (T in C above -273.15, 0 <= RH < 1)" >&2; exit 1
-  fi
   tag=T${tc}C_RH$rh
   tags+=("$tag")
   t0=$(date +%s)
