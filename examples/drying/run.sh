@@ -84,7 +84,7 @@ for pick in cut_*.step; do
   { read -r step; read -r title; } <"$pick"
   python3 "$tools/cut_picture.py" cell.data "wall_$tag.dump" --fluid "fluid_$tag.dump" \
     --color d_pressure --cscale 1e-3 --clabel "SPH pressure (kPa)" --step "$step" --title "$title" \
-    --out "pic_$name.png"
+    --frame 230e-6 --bar 50e-6 --out "pic_$name.png"    # one frame: the shrinkage shows
 done
 stamp "done; outputs in $out"
 cat summary.txt
