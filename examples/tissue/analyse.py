@@ -68,15 +68,17 @@ def cut_picture(name, ids, cells, time_of, xslab_of, air_text):
     subprocess.run([sys.executable, tool, "tissue.data", f"{name}.dump", "--fluid", f"cut_{name}_fluid.dump",
                     "--color", "X", "--crange", "0:1", "--clabel", "X/X0 of the cell (moisture)",
                     "--plane", "y", "--at", repr(ymid), "--slab", "12e-6", "--out", f"cut_{name}.png", "--title",
-                    f"{air_text}: {what}, {state}; cut at y = the box's middle"], check=True)
+                    f"{air_text}\\n{what}, {state}; cut at y = the box's middle"], check=True)
 
 
 def main(folder):
     os.chdir(folder)
     slab = [[float(v) for v in line.split()] for line in open("slab.dat") if not line.startswith("#")]
-    # the air that ran (in.tissue's first line of slab.dat: "# air: T = 333.15 K, RH 0.1, h_m 0.02 m/s")
-    air = re.search(r"T = (\S+) K, RH (\S+), h_m (\S+) m/s", open("slab.dat").readline())
-    air_text = (f"{float(air.group(1)) - 273.15:.0f} C, RH {air.group(2)}, h_m {air.group(3)} m/s"
+    # the air that ran (in.tissue's first line of slab.dat: "# air: T = 333.15 K, RH 0.1, h_m 0.02 m/s,
+    # cooling yes")
+    air = re.search(r"T = (\S+) K, RH (\S+), h_m (\S+) m/s(, cooling (\S+))?", open("slab.dat").readline())
+    surface = {"yes": ", surface cooled", "no": ", surface at the air's T"}.get(air.group(5), "") if air else ""
+    air_text = (f"{float(air.group(1)) - 273.15:.0f} C, RH {air.group(2)}, h_m {air.group(3)} m/s{surface}"
                 if air else "air not recorded")
     cells = blocks("cells.dat")       # mass, volume, X/X0, turgor, X, section area, wall area
     centres = blocks("centres.dat")   # centre z of the wall atoms
