@@ -21,7 +21,7 @@ echo "    pressure (${pmax:-?} Pa)"
 echo "  - limit warn: warned once, then halted by fix halt at the area stretch ${halt:-?}"
 echo
 echo "Made in $out:"
-echo "  fig4_fresh.png, fig4_turgid.png  the fresh and the turgid cell (the seed's Fig. 4)"
+echo "  fig4_fresh.png, fig4_turgid.png  sections of the fresh and the turgid cell to one scale (Fig. 4)"
 echo "  fig5.png                         fluid mass against time for four L_P (the seed's Fig. 5)"
 echo "  summary.txt                      steady state and timing per L_P"
 echo "  physiological.txt                the physiological L_P in physical time against the law"

@@ -2,7 +2,8 @@
 # Single-cell compression between two flat plates: a turgid apple cell (in.turgid, written to
 # turgid.data) squeezed to 50 % of its height at three plate speeds (in.compression), held there
 # while water leaves through the wall (physiological L_P, physical time), contact patch measured
-# (contact_area.py), tables (analyse.py), plots (gnuplot) and pictures (dump image). Outputs in out/.
+# (contact_area.py), tables (analyse.py), plots (gnuplot) and pictures (tools/cut_picture.py).
+# Outputs in out/.
 # Needs the set-up of tools/setup.sh (build/bin/lmp, build/tools/cellgen/cellgen). NP=1 runs on one
 # rank. README.md gives the time.
 set -euo pipefail
@@ -13,7 +14,7 @@ out=$here/out
 mkdir -p "$out"
 cd "$out"
 rm -f compress_*.dat hold_*.dat walls_*.txt wallshold_*.txt area_*.txt fd_*.dat final_*.txt pic_*.png \
-  fig_*.png summary.txt turgid.data turgid.txt
+  fig_*.png summary.txt turgid.data turgid.txt wall_*.dump fluid_*.dump
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
 if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -39,7 +40,19 @@ for v in 0.1 0.05 0.025; do
   stamp "v = $v m/s: $(head -n 1 "final_v$v.txt")"
 done
 python3 "$here/contact_area.py" turgid.data wallshold_v0.05.txt areahold_v0.05.txt
-for what in before compressed relaxed; do mv "pic_v0.05_$what.png" "pic_$what.png"; done
+# the pictures (tools/cut_picture.py): the section through the cell's centre by the plane y (x across,
+# z between the plates), the wall's outline, the fluid within 5 um coloured by its SPH pressure, a
+# scale bar, and the state of final_v0.05.txt in the title
+for what in before compressed relaxed; do
+  case $what in
+  before) state="turgid, before the compression" ;;
+  compressed) state=$(sed -n '1s/^maximum compression: \(strain [^,]*, F = [^,]*\), .*/compressed: \1/p' final_v0.05.txt) ;;
+  relaxed) state=$(sed -n '3s/^after the hold: \(t = [^,]*\), \(F = [^,]*\), .*\(M\/M0 = [^,]*\), .*/held: \1 of water loss, \2, \3/p' final_v0.05.txt) ;;
+  esac
+  python3 "$here/../../tools/cut_picture.py" turgid.data "wall_${what}_v0.05.dump" --fluid "fluid_${what}_v0.05.dump" \
+    --color c_pp --cscale 1e-3 --crange 0:600 --clabel "SPH pressure (kPa)" --plane y --slab 5e-6 \
+    --frame 260e-6 --bar 50e-6 --title "Compression at 0.05 m/s per plate\\n$state" --out "pic_$what.png"
+done
 
 # 3. tables: force against turgor x contact area, rate independence, the hold
 python3 "$here/analyse.py" 0.1 0.05 0.025 >summary.txt

@@ -11,7 +11,7 @@ lmp=$build/bin/lmp
 out=$here/out
 mkdir -p "$out"
 cd "$out"
-rm -f mass_*.dat final_*.txt fig4_*.png fig5.png seed_wall.txt summary.txt physiological.txt
+rm -f mass_*.dat final_*.txt fig4_*.png wall_*.dump fluid_*.dump fig5.png seed_wall.txt summary.txt physiological.txt
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-$here/../../potentials}
 start=$(date +%s)
 
@@ -57,9 +57,18 @@ lane2=$!
 wait $lane1
 wait $lane2
 
-mv fig4_fresh_LP2.5e-6.png fig4_fresh.png
-mv fig4_turgid_LP2.5e-6.png fig4_turgid.png
 python3 "$here/analyse.py" summary physiological
+# Fig. 4 (tools/cut_picture.py): the section through the cell's centre, the wall's outline, the fluid
+# within 8 um of the plane coloured by its SPH pressure, the same frame and scale bar fresh and turgid
+read -r _ _ t mm _ _ lam _ <final_LP2.5e-6.txt
+for state in fresh turgid; do
+  if [ $state = fresh ]; then title="fresh: t = 0, M/M0 = 1, area stretch 1"; else
+    title=$(awk -v t="$t" -v m="$mm" -v l="$lam" 'BEGIN { printf "turgid: t = %.0f us, M/M0 = %.3f, area stretch %.3f", t * 1e6, m, l }')
+  fi
+  python3 "$here/../../tools/cut_picture.py" cell.data "wall_${state}_LP2.5e-6.dump" --fluid "fluid_${state}_LP2.5e-6.dump" \
+    --color d_pressure --cscale 1e-3 --crange -50:250 --clabel "SPH pressure (kPa)" --frame 200e-6 --bar 50e-6 \
+    --title "One apple cell in pure water (L_P = 2.5e-6, pi0 = 200 kPa)\n$title" --out "fig4_$state.png"
+done
 
 gnuplot <<'GP'
 set terminal pngcairo size 1400,600 noenhanced font ",11"

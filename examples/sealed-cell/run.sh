@@ -9,7 +9,7 @@ np=${NP:-2}
 out=$here/out
 mkdir -p "$out"
 cd "$out"
-rm -f cut_*.png sealed_cell.dat profile.txt
+rm -f cut_*.png sealed_cell.dat profile.txt wall.dump fluid.dump
 if [ "$(id -u)" -eq 0 ]; then    # Open MPI refuses to run as root unless told it may
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fi
@@ -18,9 +18,17 @@ fi
 if [ "$np" = 1 ]; then run=("$build/bin/lmp"); else run=(mpirun -np "$np" "$build/bin/lmp"); fi
 "${run[@]}" -in "$here/in.sealed_cell" -log log.lammps \
   >screen.log
-last=$(ls cut_*.png | sort -t_ -k2 -n | tail -n 1)
-cp "$last" cut_final.png
-cp cut_10000.png cut_watered.png
+# the pictures (tools/cut_picture.py): the section through the centre by the plane z, the wall's
+# outline, the fluid within 5 um coloured by its SPH pressure P_i, a scale bar; the time, P_T and
+# the area stretch of sealed_cell.dat at that step (dt = 1e-8 s) in the title
+last=$(awk '/^ITEM: TIMESTEP/ { getline; s = $1 } END { print s }' wall.dump)
+for pick in "watered 10000" "final $last"; do
+  set -- $pick
+  state=$(awk -v t="$2" '!/^#/ && ($1 - t * 1e-8)^2 < 1e-24 { printf "t = %.2f ms, P_T = %.1f kPa, area stretch %.4f", $1 * 1e3, $2 / 1e3, $3; exit }' sealed_cell.dat)
+  python3 "$here/../../tools/cut_picture.py" cell.data wall.dump --fluid fluid.dump --step "$2" \
+    --color c_pp --cscale 1e-3 --crange 0:400 --clabel "SPH pressure P_i (kPa)" --slab 5e-6 \
+    --frame 200e-6 --bar 50e-6 --title "Sealed cell, $1: $state" --out "cut_$1.png"
+done
 sed '1,9d' profile.txt > profile.dat   # drop the dump header
 gnuplot <<'GP'
 set terminal pngcairo size 900,1000 noenhanced

@@ -8,9 +8,10 @@
   porosity.png       the slab's space outside the cells against its X/X0
   summary.txt        the numbers behind them (per layer, per output time)
   cut_fresh.png, cut_half.png, cut_dry.png
-                     the slab cut through its middle: the atoms within one spacing of the plane
-                     y = middle (walls green, sap blue) in fresh.dump, half.dump and dry.dump
-and the data files plotted (gnuplot): curve.dat, profile_K.dat, shrink_L.dat, cut_NAME.dat.
+                     the slab cut by the plane y through the middle of its box (tools/cut_picture.py
+                     on tissue.data and fresh.dump, half.dump, dry.dump): each cell's wall outline,
+                     the sap near the plane coloured by its cell's X/X0, a scale bar
+and the data files plotted (gnuplot): curve.dat, profile_K.dat, shrink_L.dat, cut_NAME_fluid.dump.
 
   python3 analyse.py FOLDER
 """
@@ -44,12 +45,40 @@ def dump(path):
     return box, [(int(r[1]), int(r[2]), float(r[3]), float(r[4]), float(r[5])) for r in rows]
 
 
+def cut_picture(name, ids, cells, time_of, xslab_of, air_text):
+    """cut_NAME.png (tools/cut_picture.py) of NAME.dump: the slab cut by the plane y through the
+    middle of its box, each cell's wall outline, the sap within half a spacing of the plane
+    coloured by its cell's X/X0 (cells.dat at the dump's step; 1 for the fresh slab), a scale bar,
+    the air, time and slab X/X0 in the title; the sap's dump with that column: cut_NAME_fluid.dump"""
+    with open(f"{name}.dump") as f:
+        lines = f.read().splitlines()
+    step = int(lines[1])
+    ymid = sum(float(v) for v in lines[6].split()[:2]) / 2.0
+    x_of = dict(zip(ids, (r[2] for r in cells[step]))) if step in cells else {}
+    sap = [line.split() for line in lines[9:] if line.split()[2:3] == ["1"]]
+    with open(f"cut_{name}_fluid.dump", "w") as f:
+        f.write("\n".join(lines[:3] + [str(len(sap))] + lines[4:8]) + "\nITEM: ATOMS id mol x y z X\n")
+        f.writelines(f"{i} {m} {x} {y} {z} {x_of.get(int(m), 1.0):.6f}\n" for i, m, _, x, y, z in sap)
+    if step in time_of:
+        state = f"t = {time_of[step]:.0f} s, slab X/X0 = {xslab_of[step]:.3f}"
+    else:
+        state = "before the drying, X/X0 = 1"
+    what = {"fresh": "fresh", "half": "half dry", "dry": "dry"}[name]
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "cut_picture.py")
+    subprocess.run([sys.executable, tool, "tissue.data", f"{name}.dump", "--fluid", f"cut_{name}_fluid.dump",
+                    "--color", "X", "--crange", "0:1", "--clabel", "X/X0 of the cell (moisture)",
+                    "--plane", "y", "--at", repr(ymid), "--slab", "12e-6", "--out", f"cut_{name}.png", "--title",
+                    f"{air_text}\\n{what}, {state}; cut at y = the box's middle"], check=True)
+
+
 def main(folder):
     os.chdir(folder)
     slab = [[float(v) for v in line.split()] for line in open("slab.dat") if not line.startswith("#")]
-    # the air that ran (in.tissue's first line of slab.dat: "# air: T = 333.15 K, RH 0.1, h_m 0.02 m/s")
-    air = re.search(r"T = (\S+) K, RH (\S+), h_m (\S+) m/s", open("slab.dat").readline())
-    air_text = (f"{float(air.group(1)) - 273.15:.0f} C, RH {air.group(2)}, h_m {air.group(3)} m/s"
+    # the air that ran (in.tissue's first line of slab.dat: "# air: T = 333.15 K, RH 0.1, h_m 0.02 m/s,
+    # cooling yes")
+    air = re.search(r"T = (\S+) K, RH (\S+), h_m (\S+) m/s(, cooling (\S+))?", open("slab.dat").readline())
+    surface = {"yes": ", surface cooled", "no": ", surface at the air's T"}.get(air.group(5), "") if air else ""
+    air_text = (f"{float(air.group(1)) - 273.15:.0f} C, RH {air.group(2)}, h_m {air.group(3)} m/s{surface}"
                 if air else "air not recorded")
     cells = blocks("cells.dat")       # mass, volume, X/X0, turgor, X, section area, wall area
     centres = blocks("centres.dat")   # centre z of the wall atoms
@@ -160,43 +189,12 @@ set ylabel 'section area A/A0'
 plot {layers_a}, x**(2./3) with lines dt 2 lc black title '(X/X0)^(2/3)'
 unset multiplot
 """
-    # cut pictures from the dumps: x and depth of the atoms within one spacing of y = middle
-    width = box[0][1] - box[0][0]
-    spacing = 24e-6
-    for name in ("fresh", "half", "dry"):
-        if not os.path.exists(f"{name}.dump"):
-            continue
-        # each dump in its own box (the box shrinks across with lateral 1), drawn at the fresh width
-        dbox, atoms = dump(f"{name}.dump")
-        ymid = 0.5 * (dbox[1][0] + dbox[1][1])
-        with open(f"cut_{name}.dat", "w") as f:
-            for t in (2, 1):
-                f.write(f"# type {t}: x[um] depth below the fresh top[um]\n")
-                for a in atoms:
-                    if a[1] == t and abs(a[3] - ymid) < spacing:
-                        f.write(f"{(a[2] - dbox[0][0]) * 1e6:.2f} {(ztop - a[4]) * 1e6:.2f}\n")
-                f.write("\n\n")
-        step = int(open(f"{name}.dump").readlines()[1])
-        if step in time_of:
-            state = f"t = {time_of[step]:.0f} s, slab X/X0 = {xslab_of[step]:.3f}"
-        elif name == "dry" and os.path.exists("final.txt"):
-            f = [float(v) for v in open("final.txt").read().split()]
-            state = f"t = {f[0]:.0f} s, slab X/X0 = {f[1]:.3f}"
-        else:
-            state = "t = 0, X/X0 = 1"
-        tag = {"fresh": "fresh", "half": "half dry", "dry": "dry"}[name] + f", {state}"
-        script += f"""set terminal pngcairo size 1000,{int(300 + 1000 * thick_of[s0] / width)} noenhanced font ",11"
-set output 'cut_{name}.png'
-set size ratio -1
-set xrange [0:{width * 1e6:.0f}]; set yrange [{thick_of[s0] * 1e6 + 30:.0f}:-30]
-set xlabel 'x (um)'; set ylabel 'depth below the fresh top face (um)'
-set title 'Cut through y = middle, {tag} (walls green, sap blue)'
-set key off
-plot 'cut_{name}.dat' index 0 with points pt 7 ps 0.8 lc rgb 'forest-green', '' index 1 with points pt 7 ps 0.9 lc rgb 'royalblue'
-set size noratio
-"""
     open("plots.gp", "w").write(script)
     subprocess.run(["gnuplot", "plots.gp"], check=True)
+    ids = sorted({a[0] for a in fresh if a[0] > 0})    # cell IDs, in the order of cells.dat's rows
+    for name in ("fresh", "half", "dry"):
+        if os.path.exists(f"{name}.dump"):
+            cut_picture(name, ids, cells, time_of, xslab_of, air_text)
     if os.path.exists("final.txt"):
         f = open("final.txt").read().split()
         say(f"\nend: t = {float(f[0]):.1f} s, slab X/X0 = {float(f[1]):.4f}, thickness "
