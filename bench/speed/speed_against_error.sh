@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed against error of the drying cell (issue 31, "Speed against error"), in one table:
+# Speed against error of the drying cell, in one table:
 #  1. examples/drying/in.drying as examples/drying/run.sh runs it (the seed cell, 1092 wall + 1647
 #     fluid particles; 70 C, RH 0.15, cooling yes, accel auto 0.05), turgid to X/X0 <= 0.2, on each
 #     rank count of NPS: wall-clock (the whole LAMMPS process: uptake, rest and drying) and the
