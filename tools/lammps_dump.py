@@ -4,8 +4,12 @@ and the examples' analyses.
   positions(cols, rows)  -> {id: (x, y, z)} of one snapshot (x y z, or the unwrapped xu yu zu)
   read_triangles(path)   -> the wall triangles (a, b, c) of a data file's Angles section
   molecules(path)        -> {atom id: molecule id} of a data file's Atoms section (the cell)
+  grid(points, size), near(cells, p, size)
+                         -> the keys of {key: (x, y, z)} binned in cubes of edge size, and those
+                            of the 27 cubes around p (neighbour searches within size)
 Scripts outside tools/ put this folder on sys.path first:
   sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))"""
+import math
 
 
 def snapshots(path):
@@ -35,6 +39,23 @@ def positions(cols, rows, path="the dump"):
     except ValueError:
         raise SystemExit(f"{path} needs columns id x y z (or xu yu zu), not: {' '.join(cols)}")
     return {int(r[ci]): tuple(float(r[c]) for c in cx) for r in rows}
+
+
+def grid(points, size):
+    """{cube: [keys]} of a dict key -> (x, y, z), cubes of edge size"""
+    cells = {}
+    for k, p in points.items():
+        cells.setdefault(tuple(math.floor(c / size) for c in p), []).append(k)
+    return cells
+
+
+def near(cells, p, size):
+    """the keys in the 27 cubes of grid(..., size) around p"""
+    c = [math.floor(v / size) for v in p]
+    for a in (-1, 0, 1):
+        for b in (-1, 0, 1):
+            for d in (-1, 0, 1):
+                yield from cells.get((c[0] + a, c[1] + b, c[2] + d), ())
 
 
 def data_section(path, name):

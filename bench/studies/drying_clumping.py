@@ -36,27 +36,10 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
 sys.path.insert(0, here)
-from lammps_dump import positions, read_triangles, snapshots  # noqa: E402
+from lammps_dump import grid, near, positions, read_triangles, snapshots  # noqa: E402
 from wall_self_distance import closest, cross, dot, sub  # noqa: E402
 
 RHO0 = 1000.0
-
-
-def grid(points, size):
-    """{cell: [keys]} of a dict key -> (x, y, z)"""
-    cells = {}
-    for k, p in points.items():
-        cells.setdefault(tuple(math.floor(c / size) for c in p), []).append(k)
-    return cells
-
-
-def near(cells, p, size):
-    """the keys in the 27 grid cells around p"""
-    c = [math.floor(v / size) for v in p]
-    for a in (-1, 0, 1):
-        for b in (-1, 0, 1):
-            for d in (-1, 0, 1):
-                yield from cells.get((c[0] + a, c[1] + b, c[2] + d), ())
 
 
 def wall_distances(p, wall, wcells, size, tris_of, tris):

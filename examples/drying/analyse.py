@@ -23,7 +23,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from lammps_dump import positions, snapshots  # noqa: E402
+from lammps_dump import grid, near, positions, snapshots  # noqa: E402
 from section_planes import at_x, mean_se, relative, x_by_step  # noqa: E402
 
 # columns of dry_TAG.dat (in.drying)
@@ -51,22 +51,6 @@ def planes(r, key):
     return statistics.mean(v), statistics.pstdev(v)
 
 
-def grid(points, size):
-    cells = {}
-    for p in points:
-        cells.setdefault(tuple(math.floor(c / size) for c in p), []).append(p)
-    return cells
-
-
-def near(cells, p, size):
-    """the points of the 27 grid cells around p"""
-    c = [math.floor(v / size) for v in p]
-    for dx in (-1, 0, 1):
-        for dy in (-1, 0, 1):
-            for dz in (-1, 0, 1):
-                yield from cells.get((c[0] + dx, c[1] + dy, c[2] + dz), ())
-
-
 def stability(tag, reach, rs):
     """per wall and fluid snapshot: step, X/X0, the smallest and the mean fluid nearest-neighbour
     distance over dx = (M / (rho0 N))^(1/3), the spacing of N atoms at the water density with the
@@ -82,13 +66,12 @@ def stability(tag, reach, rs):
             continue
         wall, fluid = positions(wc, wr), positions(fc, fr)
         row = by_step[step]
-        pts = list(fluid.values())
-        dx = ((m0 + row["dMfluid"]) / (1000.0 * len(pts))) ** (1 / 3)
-        cells = grid(pts, 2.0 * dx)
-        nn = [min(min((math.dist(p, q) for q in near(cells, p, 2.0 * dx) if q is not p),
-                      default=2.0 * dx), 2.0 * dx) / dx for p in pts]
-        fcells = grid(pts, reach)
-        held = sum(any(math.dist(w, q) < reach for q in near(fcells, w, reach))
+        dx = ((m0 + row["dMfluid"]) / (1000.0 * len(fluid))) ** (1 / 3)
+        cells = grid(fluid, 2.0 * dx)
+        nn = [min(min((math.dist(p, fluid[j]) for j in near(cells, p, 2.0 * dx) if j != i),
+                      default=2.0 * dx), 2.0 * dx) / dx for i, p in fluid.items()]
+        fcells = grid(fluid, reach)
+        held = sum(any(math.dist(w, fluid[j]) < reach for j in near(fcells, w, reach))
                    for w in wall.values()) / len(wall)
         out.append((step, row["X"], min(nn), statistics.mean(nn), sum(d < 0.5 for d in nn) / len(nn),
                     held))
