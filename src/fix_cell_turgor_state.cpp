@@ -45,7 +45,7 @@ void TurgorState::keep_home(const std::vector<double> &list, const CellRegistry 
     if (c >= 0 ? reg.home(c) == comm->me : comm->me == 0) {
       const double *v = &list[at];
       Cell &s = cells[(tagint) v[0]];
-      s = Cell{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}, 0.0, 0.0, 0.0, 0.0};
+      s = Cell{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
       std::copy(v + 6, v + 6 + TurgorAccel::NPROBE, s.probe);
       s.wall_dry = v[WALL_AT], s.wall_x0 = v[WALL_AT + 1], s.wall_x = v[WALL_AT + 2];
       s.wall_dx = v[WALL_AT + 3];
@@ -56,7 +56,7 @@ void TurgorState::keep_home(const std::vector<double> &list, const CellRegistry 
   }
   for (int c : reg.home_cells())
     if (cells.find(reg.id(c)) == cells.end()) {
-      cells[reg.id(c)] = Cell{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}, 0.0, 0.0, 0.0, 0.0};
+      cells[reg.id(c)] = Cell{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
     }
 }
 

@@ -31,7 +31,7 @@ class TurgorState : protected Pointers {
     double probe[TurgorAccel::NPROBE];    // accel auto: the cycle's sums
     // wallwater (0 without): dry wall mass (kg), the wall's moisture when first seen, in effect,
     // and its change by the transfer waiting to be applied (kg/kg)
-    double wall_dry, wall_x0, wall_x, wall_dx;
+    double wall_dry = 0.0, wall_x0 = 0.0, wall_x = 0.0, wall_dx = 0.0;
   };
 
   TurgorState(class LAMMPS *);
