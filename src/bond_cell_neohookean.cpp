@@ -21,6 +21,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +71,8 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
   const int nbondlist = neighbor->nbondlist;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
-  const double *stretch = wall_stretch();
+  const double *stretch = stretch_last = wall_stretch();
+  stretch_step = update->ntimestep;
   double ebond = 0.0;
 
   for (int n = 0; n < nbondlist; n++) {
@@ -357,7 +359,9 @@ double BondCellNeoHookean::single(int type, double rsq, int i, int j, double &ff
 {
   const double r = sqrt(rsq);
   double u, l0, area;
-  reference(i, j, wall_stretch(), l0, area);
+  // the stretch of this step's compute() (a fix fills it per atom: not again per bond)
+  const double *stretch = stretch_step == update->ntimestep ? stretch_last : wall_stretch();
+  reference(i, j, stretch, l0, area);
   fforce = -stretch_force(type, r, l0, area, u) / r;
   return u;
 }
