@@ -39,8 +39,8 @@ class BondCellNeoHookean : public Bond {
   int ixref;        // index of the per-atom reference positions (d2_xref 3)
   int iaref;        // index of the per-atom reference area per bond (d_aref), -1 if absent
   std::vector<CellWallStretch *> stretchers;    // fixes that may set the wall's stretch
-  const double *stretch_last = nullptr;          // the stretch of the last compute() ...
-  bigint stretch_step = -1;                      // ... and its step, for single()
+  const double *stretch_last = nullptr;         // the stretch of the last compute() ...
+  bigint stretch_step = -1;                     // ... and its step, for single()
 
   void allocate();
   int parse_law(const std::string &);

@@ -183,7 +183,7 @@ def main():
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
         version = int(round(-marker))
-        if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5, 6, 7):
+        if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5, 6, 7, 8):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
             target = int(styles[1]) if len(styles) > 1 else 11
