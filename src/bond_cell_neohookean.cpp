@@ -2,7 +2,8 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    bond_style cell/neohookean: one wall bond of a triangulated Neo-Hookean membrane.
    Rest length of each bond from the per-atom reference positions (d2_xref 3) of its atoms, so it
-   moves with the atoms across ranks and through restart and data files.
+   moves with the atoms across ranks and through restart and data files; scaled by the wall's
+   stress-free stretch when a fix sets it (cell_styles.h CellWallStretch).
 ------------------------------------------------------------------------- */
 
 #include "bond_cell_neohookean.h"
@@ -18,7 +19,9 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +71,8 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
   const int nbondlist = neighbor->nbondlist;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
+  const double *stretch = stretch_last = wall_stretch();
+  stretch_step = update->ntimestep;
   double ebond = 0.0;
 
   for (int n = 0; n < nbondlist; n++) {
@@ -83,8 +88,9 @@ void BondCellNeoHookean::compute(int eflag, int vflag)
       error->one(FLERR, "Bond cell/neohookean: atoms {} and {} coincide", atom->tag[i1],
                  atom->tag[i2]);
 
-    const double l0 = rest_length(i1, i2);
-    double fbond = -stretch_force(type, r, l0, bond_area(i1, i2, l0), ebond) / r;
+    double l0, area;
+    reference(i1, i2, stretch, l0, area);
+    double fbond = -stretch_force(type, r, l0, area, ebond) / r;
 
     // F^d = -gamma ((v1 - v2) . e) e, damps stretching, not rigid motion (doc/model.md §4.3)
     if (gamma[type] > 0.0)
@@ -133,6 +139,40 @@ double BondCellNeoHookean::bond_area(int i, int j, double l0) const
     error->one(FLERR, "Bond cell/neohookean: bond {}-{} has reference area aref_i + aref_j = {}",
                atom->tag[i], atom->tag[j], a);
   return a;
+}
+
+/* ----------------------------------------------------------------------
+   rest length l0 and area a of the bond between local atoms i and j: from xref and aref, times
+   s and s^2 with a wall stretch s per atom (s the mean of the two; doc/model.md §5.15)
+------------------------------------------------------------------------- */
+
+void BondCellNeoHookean::reference(int i, int j, const double *stretch, double &l0, double &a) const
+{
+  l0 = rest_length(i, j);
+  a = bond_area(i, j, l0);
+  if (!stretch) return;
+  // l0 <- s l0, a <- s^2 a: the stress-free wall shrinks in its plane (doc/model.md §5.15)
+  const double s = 0.5 * (stretch[i] + stretch[j]);
+  l0 *= s;
+  a *= s * s;
+}
+
+/* ----------------------------------------------------------------------
+   each atom's wall stretch from the one fix that sets it at this step, nullptr if none does
+------------------------------------------------------------------------- */
+
+const double *BondCellNeoHookean::wall_stretch() const
+{
+  const double *found = nullptr;
+  for (CellWallStretch *fix : stretchers)
+    if (const double *s = fix->wall_stretch()) {
+      if (found)
+        error->all(FLERR,
+                   "Bond cell/neohookean: two fixes set the wall's stretch (wallwater of "
+                   "fix cell/turgor): use one");
+      found = s;
+    }
+  return found;
 }
 
 /* ----------------------------------------------------------------------
@@ -256,6 +296,7 @@ void BondCellNeoHookean::init_style()
     error->all(FLERR, "Bond style cell/neohookean: per-atom 'aref' must be a d_aref vector");
 
   for (int i = 1; i <= atom->nbondtypes; i++) gt0[i] = shear[i] * thickness[i];
+  stretchers = cell_fixes<CellWallStretch>(modify);
   CellBond::require_ghost_velocity(lmp, "cell/neohookean", gamma, atom->nbondtypes);
 
   std::vector<double> lmax(atom->nbondtypes + 1, 0.0);
@@ -317,9 +358,11 @@ void BondCellNeoHookean::write_data(FILE *fp)
 double BondCellNeoHookean::single(int type, double rsq, int i, int j, double &fforce)
 {
   const double r = sqrt(rsq);
-  double u;
-  const double l0 = rest_length(i, j);
-  fforce = -stretch_force(type, r, l0, bond_area(i, j, l0), u) / r;
+  double u, l0, area;
+  // the stretch of this step's compute() (a fix fills it per atom: not again per bond)
+  const double *stretch = stretch_step == update->ntimestep ? stretch_last : wall_stretch();
+  reference(i, j, stretch, l0, area);
+  fforce = -stretch_force(type, r, l0, area, u) / r;
   return u;
 }
 

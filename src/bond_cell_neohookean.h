@@ -9,8 +9,11 @@
 #include "bond.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
+
+class CellWallStretch;
 
 class BondCellNeoHookean : public Bond {
  public:
@@ -35,11 +38,16 @@ class BondCellNeoHookean : public Bond {
   double *l0max;    // longest rest length per type, for cutoff estimates
   int ixref;        // index of the per-atom reference positions (d2_xref 3)
   int iaref;        // index of the per-atom reference area per bond (d_aref), -1 if absent
+  std::vector<CellWallStretch *> stretchers;    // fixes that may set the wall's stretch
+  const double *stretch_last = nullptr;         // the stretch of the last compute() ...
+  bigint stretch_step = -1;                     // ... and its step, for single()
 
   void allocate();
   int parse_law(const std::string &);
   double rest_length(int, int) const;
   double bond_area(int, int, double) const;
+  const double *wall_stretch() const;
+  void reference(int, int, const double *, double &, double &) const;
   double stretch_force(int, double, double, double, double &) const;
 };
 

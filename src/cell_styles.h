@@ -1,9 +1,9 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    The contracts between cellsph's styles: the names of the per-atom fields they share, the wall
-   load that the pair styles tally for the per-cell sums (cell_reduce.h), and a typed search for a
-   style among the defined fixes. A style that offers or uses one of these includes this header,
-   not the other style's.
+   load that the pair styles tally for the per-cell sums (cell_reduce.h), the wall's stretch that
+   a fix hands the wall's bond style, and a typed search for a style among the defined fixes. A
+   style that offers or uses one of these includes this header, not the other style's.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_STYLES_H
@@ -39,6 +39,16 @@ class CellWallLoad {
   virtual bool request_wall_load(int fluidtype, int walltype, const std::string &who) = 0;
   // the load on each owned atom at the last evaluation, or nullptr
   virtual double **wall_load() const = 0;
+};
+
+// a fix that sets the stress-free in-plane stretch s of each cell's wall (its hygroexpansion,
+// doc/model.md §5.15): bond cell/neohookean scales its rest lengths by s and its areas by s^2
+class CellWallStretch {
+ public:
+  virtual ~CellWallStretch() = default;
+  // s per owned and ghost atom at this step (1 outside the fix's cells), nullptr while this fix
+  // keeps the wall's reference fixed
+  virtual const double *wall_stretch() = 0;
 };
 
 // the pair styles (also hybrid sub-styles) that carry a wall load, in a fixed order

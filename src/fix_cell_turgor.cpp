@@ -42,9 +42,9 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lp(0.0), pi0(0.0), rhow(1000.0), accel(lmp), ea(0.0),
     osmotic_model(lmp, "Fix cell/turgor"), drive(lmp, "Fix cell/turgor"), tau(0.0), bulk(0.0),
     kfluid(0.0), limit(LIMIT_ERROR), limit_set(0), fluidtype(1), walltype(2), state(lmp),
-    physical_time(0.0), water_moved(0.0), max_imbalance(0.0), max_stiffness(0.0), busiest(0.0),
-    exposed_flux(0.0), exposed_area(0.0), lcc{0.0, "", -1}, water_exchanged(0.0), exchange_net(0.0),
-    exchange_stiffness(0.0), crossing(0)
+    wallwater(lmp, "Fix cell/turgor"), physical_time(0.0), water_moved(0.0), max_imbalance(0.0),
+    max_stiffness(0.0), busiest(0.0), exposed_flux(0.0), exposed_area(0.0), lcc{0.0, "", -1},
+    water_exchanged(0.0), exchange_net(0.0), exchange_stiffness(0.0), crossing(0)
 {
   if (narg < 4)
     error->all(FLERR,
@@ -67,7 +67,7 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
     network = std::make_unique<TurgorNetwork>(world);
   }
   vector_flag = 1;
-  size_vector = 19;
+  size_vector = 20;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -116,6 +116,8 @@ int FixCellTurgor::parse_keyword(int narg, char **arg, Keywords &given)
   } else if (key == "limit") {
     parse_limit(value);
   } else if (int n = osmotic_model.parse(narg, arg)) {
+    return n;
+  } else if (int n = wallwater.parse(narg, arg)) {
     return n;
   } else if (key == "file") {
     read_file(value, given);
@@ -264,6 +266,7 @@ void FixCellTurgor::init()
     state.keep_home(before, cells->registry(), pi0);
     state.swap_saved();
   }
+  if (wallwater.on()) share_wall_water();
   drive.init();
   lcc.resolve(lmp, "Fix cell/turgor: variable");
   if (junctions) junctions->init();
@@ -361,6 +364,7 @@ void FixCellTurgor::apply_pending()
     pending[i] = 0.0;
   }
   CellCompat::forward_comm(comm, this);
+  if (wallwater.on()) apply_wall_water();
   water_moved += moved_pending;
   physical_time += time_pending;
   moved_pending = time_pending = 0.0;
@@ -394,6 +398,7 @@ void FixCellTurgor::evaluate(bool transfer)
   const bool starting = accel.pending;
   if (accel.pending) max_stiffness *= accel.begin(e.first_accel);
   if (junctions) network_transfer(e, transfer);
+  if (wallwater.on()) wall_water(e, transfer);
   control(e.cycle, transfer || starting, transfer, e.turgor, e.conductance);
   if (transfer) spread(e);
 }
@@ -866,7 +871,7 @@ bool FixCellTurgor::water(tagint cell, double mass, Water &w) const
    summed at the last evaluation, 15 the surface temperature of the air drive (K), 16 the mean
    vapour flux over the exposed area (kg m^-2 s^-1), 17 the exposed area (m^2), 18 junctions
    between cells of different home ranks, 19 the longest wall edge over the shortest longest one
-   since the start (0 before the first transfer)
+   since the start (0 before the first transfer), 20 the water of the cells' walls (kg)
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::compute_vector(int n)
@@ -889,7 +894,8 @@ double FixCellTurgor::compute_vector(int n)
                            exposed_flux,
                            exposed_area,
                            (double) crossing,
-                           accel.edge};
+                           accel.edge,
+                           wallwater.water};
   return values[n];
 }
 

@@ -4,20 +4,22 @@
    external water potential, or air of a given temperature and humidity (doc/model.md §5).
    Its parts, each in fix_cell_turgor_<part>.{h,cpp}: drive (T, psi_ext, air, curve), osmotic
    (pi), accel (time-scale bridging), state (per-cell state), junctions and network (water
-   between cells), restart (restart file, per-atom storage: a .cpp of this class); cell_water.h
-   its pure water physics
+   between cells), restart (restart file, per-atom storage: a .cpp of this class), wallwater (the
+   wall's own water and stretch); cell_water.h its pure water physics
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_CELL_TURGOR_H
 #define LMP_FIX_CELL_TURGOR_H
 
 #include "cell_quantity.h"
+#include "cell_styles.h"
 #include "fix.h"
 #include "fix_cell_turgor_accel.h"
 #include "fix_cell_turgor_drive.h"
 #include "fix_cell_turgor_network.h"
 #include "fix_cell_turgor_osmotic.h"
 #include "fix_cell_turgor_state.h"
+#include "fix_cell_turgor_wallwater.h"
 
 #include <memory>
 #include <string>
@@ -29,7 +31,7 @@ class TurgorJunctions;
 class CellReduce;
 class CellRegistry;
 
-class FixCellTurgor : public Fix {
+class FixCellTurgor : public Fix, public CellWallStretch {
  public:
   FixCellTurgor(class LAMMPS *, int, char **);
   ~FixCellTurgor() override;
@@ -54,6 +56,7 @@ class FixCellTurgor : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
   double memory_usage() override;
+  const double *wall_stretch() override;
 
   // the water of a cell as the last evaluation saw it (compute cell/props columns 18-22)
   struct Water {
@@ -85,8 +88,9 @@ class FixCellTurgor : public Fix {
   double kfluid;    // K in use
   int limit, limit_set, fluidtype, walltype;
   std::unique_ptr<CellReduce> cells;
-  TurgorState state;          // per cell, on its home rank
-  std::vector<double> gt0;    // G t0 per bond type from the bond style, empty without it
+  TurgorState state;            // per cell, on its home rank
+  std::vector<double> gt0;      // G t0 per bond type from the bond style, empty without it
+  TurgorWallWater wallwater;    // the wall's own water and stretch (doc/model.md §5.15)
 
   double physical_time, water_moved, max_imbalance, max_stiffness;
   // a transfer evaluated at the end of a step is applied before the next step's forces, so that
@@ -169,6 +173,9 @@ class FixCellTurgor : public Fix {
   void control(const TurgorAccel::Cycle &cycle, bool limit, bool transfer,
                const std::vector<double> &turgors, const std::vector<double> &conductances);
   void apply_pending();
+  void wall_water(Evaluation &e, bool transfer);
+  void apply_wall_water();
+  void share_wall_water();
   void transfer();
   void exchange(const TurgorNetwork::Cells &in, bool transfer, double dtw, double factor,
                 std::vector<double> &dmass);

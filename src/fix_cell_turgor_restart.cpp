@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor's restart file and per-atom storage: the per-cell state and the global values
-   in the restart file, format versions 1-7; per atom, the relative mass change of the transfer
+   in the restart file, format versions 1-8; per atom, the relative mass change of the transfer
    waiting to be applied, migrating with its atom and in restart files
 ------------------------------------------------------------------------- */
 
@@ -18,10 +18,10 @@
 
 using namespace LAMMPS_NS;
 
-// 7: + the wall edges of accel; 6: + the water and time of the transfer waiting to be applied (per
-// atom: its mass change); 5: + water exchanged between cells; 4: + accel auto state; 3: + solids
-// per cell; 2: begins with -version; 1: none
-static const int RESTART_VERSION = 7;
+// 8: + the wall's water per cell; 7: + the wall edges of accel; 6: + the water and time of the
+// transfer waiting to be applied (per atom: its mass change); 5: + water exchanged between cells;
+// 4: + accel auto state; 3: + solids per cell; 2: begins with -version; 1: none
+static const int RESTART_VERSION = 8;
 
 // global restart values after the number of cells: physical time, water moved (1-3), adapted
 // accel (0: not auto), open and sealed samples, lag estimate and its error (4), water exchanged
@@ -91,6 +91,11 @@ void FixCellTurgor::restart(char *buf)
     const double solids = version >= 3 ? v[5] : 0.0;
     TurgorState::Cell cell{v[1], v[2], (int) v[3], v[4], solids, 0.0, 0.0, 0.0, {}};
     if (adapted) std::copy(v + 6, v + 6 + TurgorAccel::NPROBE, cell.probe);
+    // the wall's water from version 8 on; older files: the wall first seen at the next evaluation
+    if (version >= 8) {
+      cell.wall_dry = v[16], cell.wall_x0 = v[17];
+      cell.wall_x = v[18], cell.wall_dx = v[19];
+    }
     // every rank holds every cell until init() keeps its home cells
     state[(tagint) v[0]] = cell;
     other_pi0 = other_pi0 || v[2] != pi0;

@@ -13,7 +13,8 @@
 using namespace LAMMPS_NS;
 
 // a cell's state moved between ranks at init: its restart values, turgor, psi_surface, rate
-static const int STATE_VALUES = 19;
+static const int STATE_VALUES = 23;
+static const int WALL_AT = 6 + TurgorAccel::NPROBE;    // where the wall's water begins
 
 /* ---------------------------------------------------------------------- */
 
@@ -23,7 +24,7 @@ TurgorState::TurgorState(LAMMPS *lmp) : Pointers(lmp) {}
 
 int TurgorState::restart_values(int version)
 {
-  return version >= 4 ? 16 : (version >= 3 ? 6 : 5);
+  return version >= 8 ? 20 : version >= 4 ? 16 : (version >= 3 ? 6 : 5);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -46,9 +47,11 @@ void TurgorState::keep_home(const std::vector<double> &list, const CellRegistry 
       Cell &s = cells[(tagint) v[0]];
       s = Cell{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
       std::copy(v + 6, v + 6 + TurgorAccel::NPROBE, s.probe);
-      s.turgor = v[6 + TurgorAccel::NPROBE];
-      s.psi_surface = v[7 + TurgorAccel::NPROBE];
-      s.rate = v[8 + TurgorAccel::NPROBE];
+      s.wall_dry = v[WALL_AT], s.wall_x0 = v[WALL_AT + 1], s.wall_x = v[WALL_AT + 2];
+      s.wall_dx = v[WALL_AT + 3];
+      s.turgor = v[WALL_AT + 4];
+      s.psi_surface = v[WALL_AT + 5];
+      s.rate = v[WALL_AT + 6];
     }
   }
   for (int c : reg.home_cells())
@@ -74,7 +77,8 @@ int TurgorState::gather_restart(int version, std::vector<double> &list) const
 
 /* ----------------------------------------------------------------------
    this rank's cell states, the current restart values each: ID, mass0, pi0, warned, offset,
-   solids, the accel auto sums; full: + the last evaluation's turgor, psi_surface and rate
+   solids, the accel auto sums, the wall's water; full: + the last evaluation's turgor, psi_surface
+   and rate
 ------------------------------------------------------------------------- */
 
 void TurgorState::pack(std::vector<double> &list, bool full) const
@@ -85,6 +89,7 @@ void TurgorState::pack(std::vector<double> &list, bool full) const
     list.insert(list.end(),
                 {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
     list.insert(list.end(), s.probe, s.probe + TurgorAccel::NPROBE);
+    list.insert(list.end(), {s.wall_dry, s.wall_x0, s.wall_x, s.wall_dx});
     if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
   }
 }

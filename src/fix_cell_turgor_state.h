@@ -29,12 +29,16 @@ class TurgorState : protected Pointers {
     double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
     double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
     double probe[TurgorAccel::NPROBE];    // accel auto: the cycle's sums
+    // wallwater (0 without): dry wall mass (kg), the wall's moisture when first seen, in effect,
+    // and its change by the transfer waiting to be applied (kg/kg)
+    double wall_dry = 0.0, wall_x0 = 0.0, wall_x = 0.0, wall_dx = 0.0;
   };
 
   TurgorState(class LAMMPS *);
 
   // restart values per cell of format version: ID, mass0, pi0, warned, offset (versions 1, 2),
-  // solids (3), the accel auto cycle's sums (4: TurgorAccel::NPROBE = 10 values)
+  // solids (3), the accel auto cycle's sums (4: TurgorAccel::NPROBE = 10 values), the wall's
+  // water: wall_dry, wall_x0, wall_x, wall_dx (8)
   static int restart_values(int version);
 
   Cell &operator[](tagint id) { return cells[id]; }

@@ -26,11 +26,12 @@ writes it (int length, name, NUL) followed by the marker -version (src/*.cpp RES
 an int for pair cell/sph, a double for pair cell/wall, bonds cell/neohookean and cell/lamella and
 dihedral cell/bending, a double after
 the payload size for fix cell/turgor. Each style must be found exactly once; OUT is written only
-then. A fix cell/turgor payload of version 7 (12 more global values: accel auto state, water
-exchanged between cells, the waiting transfer, accel auto's wall edges; 16 values per cell), 6 (9
+then. A fix cell/turgor payload of version 8 (12 more global values: accel auto state, water
+exchanged between cells, the waiting transfer, accel auto's wall edges; 20 values per cell: the
+wall's water), 7 (12 more global values; 16 values per cell), 6 (9
 more global values; 16 per cell), 5 (6 more global values; 16
 per cell), 4 (5 more global values; 16 per cell) or 3 (6 per cell) loses what came after version 2
-(the wall edges, the waiting transfer, the exchanged water, the accel auto state, the dry solids) when made
+(the wall's water, the wall edges, the waiting transfer, the exchanged water, the accel auto state, the dry solids) when made
 unversioned or older, so that it has the layout of versions 1 and 2 (5 per cell).
 """
 import struct
@@ -61,14 +62,14 @@ def find_marker(data, style):
 
 
 def turgor_to_version2(data, at, version):
-    """Keep the version-2 values of the version-3 to -7 cell/turgor payload whose marker is at
+    """Keep the version-2 values of the version-3 to -8 cell/turgor payload whose marker is at
     offset at: count, physical time, water moved [, accel, open and sealed samples, lag, its error
-    (4-7)] [, water exchanged (5-7)] [, the waiting transfer's water and time, the step of its
-    evaluation (6, 7)] [, the wall edges (7)], then per cell ID mass0 pi0 warned offset [solids
-    (3-7) and 10 accel auto sums (4-7)]."""
+    (4-8)] [, water exchanged (5-8)] [, the waiting transfer's water and time, the step of its
+    evaluation (6-8)] [, the wall edges (7, 8)], then per cell ID mass0 pi0 warned offset [solids
+    (3-8), 10 accel auto sums (4-8) and 4 values of the wall's water (8)]."""
     (count,) = struct.unpack_from("=d", data, at + 8)
     n = int(count)
-    extra, per = {7: (12, 16), 6: (9, 16), 5: (6, 16), 4: (5, 16), 3: (0, 6)}[version]
+    extra, per = {8: (12, 20), 7: (12, 16), 6: (9, 16), 5: (6, 16), 4: (5, 16), 3: (0, 6)}[version]
     end = at + 8 * (4 + extra + per * n)
     values = list(struct.unpack_from(f"={per * n}d", data, at + 8 * (4 + extra)))
     kept = [v for k, v in enumerate(values) if k % per < 5]
@@ -182,7 +183,7 @@ def main():
         gap, fmt = LAYOUT[style]
         at, marker = find_marker(data, style)
         version = int(round(-marker))
-        if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5, 6, 7):
+        if style == "cell/turgor" and mode != "newer" and version in (3, 4, 5, 6, 7, 8):
             turgor_to_version2(data, at, version)
         if style == "cell/sph" and mode == "older":
             target = int(styles[1]) if len(styles) > 1 else 11

@@ -28,7 +28,7 @@ from section_planes import at_x, mean_se, relative, x_by_step  # noqa: E402
 
 # columns of dry_TAG.dat (in.drying)
 COLS = ("t X X_db PT pi PW V A P F round elong compact wrink out free aw dMdt moved dMfluid "
-        "Ax Px Fx Ay Py Fy step accel Ts").split()
+        "Ax Px Fx Ay Py Fy step accel Ts Wwall imbalance").split()
 APPLE = {"A": 0.4, "P": 0.7, "F": 0.6}
 
 
@@ -218,6 +218,9 @@ def main(tags):
         tlp = next((r for r in rs if r["PT"] <= 0.0), None)
         inter = first_line(f"intersections_{tag}.txt")
         acct = max(abs(r["moved"] - r["dMfluid"]) for r in rs) / abs(rs[-1]["dMfluid"] or 1)
+        walls = any(r.get("Wwall", 0.0) for r in rs)
+        if walls:  # wallwater: moved - dM_sap - W_wall stays at -W0 (the walls' first water)
+            acct = max(abs(r["imbalance"] - r0["imbalance"]) for r in rs) / abs(rs[-1]["dMfluid"] or 1)
         short, whole = conditions(tag)
         names[tag] = short
         print(f"\n{tag}: {whole}")
@@ -261,7 +264,7 @@ def main(tags):
               f" fluid-free volume {end['free']:.3f} of V at the end")
         print(f"  checks: fluid atoms outside the wall at most {max(r['out'] for r in rs):.0f}; "
               f"wall self-intersections at most {inter[0] if inter != 'n/a' else 'n/a'} triangle pairs; "
-              f"|water moved - fluid mass change| / water lost at most {acct:.1e}")
+              f"|water moved - {'sap and wall water change (from the first output)' if walls else 'fluid mass change'}| / water lost at most {acct:.1e}")
         try:
             st = stability(tag, reach_of(tag), rs)
         except (OSError, AttributeError):
