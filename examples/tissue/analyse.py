@@ -45,6 +45,16 @@ def dump(path):
     return box, [(int(r[1]), int(r[2]), float(r[3]), float(r[4]), float(r[5])) for r in rows]
 
 
+def depth_layers(depth0, v0):
+    """(number of layers, each cell's layer; 0 at the top) from the cells' centre depths and volumes:
+    as many layers as the slab has cells across (the data file's name is not needed), of equal
+    thickness from the shallowest to the deepest centre"""
+    n = len(depth0)
+    nlayer = max(2, round((max(depth0) - min(depth0)) / (sum(v0) / n) ** (1 / 3)) + 1)
+    lo, hi = min(depth0), max(depth0) + 1e-12
+    return nlayer, [min(nlayer - 1, int((d - lo) / (hi - lo) * nlayer)) for d in depth0]
+
+
 def cut_picture(name, ids, cells, time_of, xslab_of, air_text):
     """cut_NAME.png (tools/cut_picture.py) of NAME.dump: the slab cut by the plane y through the
     middle of its box, each cell's wall outline, the sap within half a spacing of the plane
@@ -98,11 +108,7 @@ def main(folder):
     depth0 = [ztop - centres[s0][c][0] for c in range(n)]
     v0 = [cells[s0][c][1] for c in range(n)]
     a0 = [cells[s0][c][5] for c in range(n)]
-    # depth layers: as many as the slab has cells across (the data file's name is not needed:
-    # layers of equal thickness from the shallowest to the deepest centre)
-    nlayer = max(2, round((max(depth0) - min(depth0)) / (sum(v0) / n) ** (1 / 3)) + 1)
-    lo, hi = min(depth0), max(depth0) + 1e-12
-    layer = [min(nlayer - 1, int((d - lo) / (hi - lo) * nlayer)) for d in depth0]
+    nlayer, layer = depth_layers(depth0, v0)
     out = open("summary.txt", "w")
 
     def say(text):
