@@ -33,7 +33,7 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
                        bool fluid_sums) :
     Pointers(lmp),
     command(command_in), group_name(group->names[igroup]), fluidtype(fluid), walltype(wall),
-    surfacebit(0), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_WALL),
+    surfacebit(0), irho(-1), ipressure(-1), ixref(-1), measure(TURGOR_SPH),
     geometry_only(!fluid_sums), cells(lmp, command_in, igroup)
 {
   for (int type : {geometry_only ? wall : fluid, wall})
@@ -43,18 +43,6 @@ CellReduce::CellReduce(LAMMPS *lmp, const std::string &command_in, int igroup, i
     error->all(FLERR, "{}: fluid and wall atom types must differ (both {})", command, fluid);
   if (!atom->molecule_flag)
     error->all(FLERR, "{}: needs molecule (cell) IDs: use atom_style angle", command);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void CellReduce::set_turgor(const std::string &value)
-{
-  if (value == "wall")
-    measure = TURGOR_WALL;
-  else if (value == "sph")
-    measure = TURGOR_SPH;
-  else
-    error->all(FLERR, "{}: unknown turgor measure '{}' (expected wall or sph)", command, value);
 }
 
 /* ----------------------------------------------------------------------
@@ -88,11 +76,23 @@ void CellReduce::init_fluid()
   loads.clear();
   for (CellWallLoad *load : cell_wall_loads(force))
     if (load->request_wall_load(fluidtype, walltype, command)) loads.push_back(load);
-  if (loads.empty() && measure == TURGOR_WALL)
-    error->all(FLERR,
-               "{}: turgor wall (the default) needs the wall load from pair_style cell/wall; add "
-               "it or use 'turgor sph'",
-               command);
+  measure = particle_wall_model() ? TURGOR_WALL : TURGOR_SPH;
+}
+
+/* ----------------------------------------------------------------------
+   true if the fluid is held by pair cell/wall's wall-fluid terms alone (the seed's particle model),
+   whose mean SPH pressure is ~21 % above the wall load; false under the SPH wall boundary of pair
+   cell/sph (P_SPH = P_W within 0.2 % with background auto), also with cell/wall's adhesion beside
+   it (examples/tissue), and without any wall load (doc/model.md §1.4, §5.3)
+------------------------------------------------------------------------- */
+
+bool CellReduce::particle_wall_model() const
+{
+  auto tallies = [this](const char *style) {
+    auto *load = dynamic_cast<CellWallLoad *>(force->pair_match(style, 0));
+    return load && std::find(loads.begin(), loads.end(), load) != loads.end();
+  };
+  return tallies("cell/wall") && !tallies("cell/sph");
 }
 
 /* ---------------------------------------------------------------------- */

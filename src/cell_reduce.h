@@ -51,10 +51,11 @@ class CellReduce : protected Pointers {
     NCOLUMN
   };
 
-  // which pressure is the cell's turgor P_T
+  // how the cell's turgor P_T (the load of the fluid on the wall) is measured: set by init() from
+  // the wall-fluid model in use
   enum Turgor {
-    TURGOR_WALL,    // the load of the fluid on the wall (pair cell/wall), default
-    TURGOR_SPH      // the volume-weighted mean SPH pressure of the fluid
+    TURGOR_WALL,    // the wall load itself: pair cell/wall's particle model (the seed's)
+    TURGOR_SPH      // the volume-weighted mean SPH pressure: the SPH wall boundary, or no load
   };
 
   // fluid_sums false: wall geometry only (compute cell/shape): fluidtype is not used, reduce() sums
@@ -62,8 +63,6 @@ class CellReduce : protected Pointers {
   CellReduce(class LAMMPS *, const std::string &command, int igroup, int fluidtype, int walltype,
              bool fluid_sums = true);
 
-  // the value of a 'turgor wall|sph' keyword
-  void set_turgor(const std::string &value);
   // the group whose wall triangles (all three corners in it) reduce() sums as SURFAREA2
   void set_surface(int surface_groupbit) { surfacebit = surface_groupbit; }
   void find_cells() { cells.find_cells(); }
@@ -106,6 +105,7 @@ class CellReduce : protected Pointers {
   double sph_turgor(int c) const;
   double wall_turgor(int c) const;
   bool has_wall_load() const { return !loads.empty(); }
+  // the particle wall-fluid model (pair cell/wall): P_T from the wall load (after init())
   bool wall_measure() const { return measure == TURGOR_WALL; }
   double mean_gt0(int c) const;
   void gyration(int c, double s[6]) const;
@@ -122,6 +122,7 @@ class CellReduce : protected Pointers {
   std::vector<double> local, total;    // sums per touched cell, totals per home cell
 
   void init_fluid();
+  bool particle_wall_model() const;
   void add_fluid(int i, double *s);
   void add_wall(int i, int c, double *s, double b[3]);
   void add_triangles(int i, int c, const double *b, double *s, std::vector<double> *triangles,

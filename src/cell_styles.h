@@ -35,7 +35,8 @@ class CellWallLoad {
  public:
   virtual ~CellWallLoad() = default;
   // start tallying the load of fluidtype on walltype on every force evaluation until the next
-  // init; false if this style carries no wall load (pair cell/sph without a wall boundary)
+  // init; false if this style carries no wall load (pair cell/sph without a wall boundary,
+  // pair cell/wall without wall-fluid terms)
   virtual bool request_wall_load(int fluidtype, int walltype, const std::string &who) = 0;
   // the load on each owned atom at the last evaluation, or nullptr
   virtual double **wall_load() const = 0;

@@ -55,13 +55,9 @@ inline double arrhenius(double ea, double t, double tref)
   return exp(-ea / GAS_R * (1.0 / t - 1.0 / tref));
 }
 
-// dry air at 1 atm: viscosity (Sutherland's law, 1.716e-5 Pa s at 273.15 K, S = 110.4 K), density
-// (ideal gas, M_air = 28.965e-3 kg/mol) and the diffusivity of water vapour in air (Bolz & Tuve
-// 1976, 250-450 K): D = -2.775e-6 + 4.479e-8 T + 1.656e-10 T^2 m^2/s (doc/model.md §5.8)
-inline double air_viscosity(double t)
-{
-  return 1.716e-5 * pow(t / 273.15, 1.5) * (273.15 + 110.4) / (t + 110.4);
-}
+// dry air at 1 atm: density (ideal gas, M_air = 28.965e-3 kg/mol) and the diffusivity of water
+// vapour in air (Bolz & Tuve 1976, 250-450 K): D = -2.775e-6 + 4.479e-8 T + 1.656e-10 T^2 m^2/s
+// (doc/model.md §5.8)
 inline double air_density(double t)
 {
   return 101325.0 * 28.965e-3 / (GAS_R * t);
@@ -70,19 +66,6 @@ inline double vapour_diffusivity(double t)
 {
   return -2.775e-6 + 4.479e-8 * t + 1.656e-10 * t * t;
 }
-// Reynolds number U L / nu of air at T flowing at U along a sample of length L
-inline double reynolds(double t, double u, double l)
-{
-  return u * l * air_density(t) / air_viscosity(t);
-}
-// mass-transfer coefficient of a laminar flat plate averaged over its length L (Re < 5e5):
-// Sh = h_m L / D = 0.664 Re^(1/2) Sc^(1/3), Sc = nu / D (Chilton-Colburn analogy)
-inline double plate_transfer(double t, double u, double l)
-{
-  const double nu = air_viscosity(t) / air_density(t), d = vapour_diffusivity(t);
-  return 0.664 * sqrt(reynolds(t, u, l)) * cbrt(nu / d) * d / l;
-}
-
 // evaporative cooling of the exposed surface (doc/model.md §5.14)
 constexpr double TRIPLE_T = 273.16;       // triple point of water (K): Wagner & Pruss's lower end
 constexpr double COOLING_TMAX = 450.0;    // upper end of the vapour diffusivity behind h_c (K)

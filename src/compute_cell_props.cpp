@@ -98,7 +98,6 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
 {
   int walltype = 2;
   fluidtype = 1;
-  std::string measure = "wall";
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Compute cell/props: missing value after '{}'", arg[iarg]);
@@ -107,19 +106,22 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
     else if (strcmp(arg[iarg], "wall") == 0)
       walltype = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
     else if (strcmp(arg[iarg], "turgor") == 0)
-      measure = arg[iarg + 1];
+      error->all(FLERR,
+                 "Compute cell/props: keyword 'turgor {}' was removed: column 5 follows the "
+                 "wall-fluid model (the mean SPH pressure under the wall boundary of pair "
+                 "cell/sph, the wall load under pair cell/wall's wall-fluid terms); columns 14 and "
+                 "15 give the mean SPH pressure and the wall load",
+                 arg[iarg + 1]);
     else if (strcmp(arg[iarg], "held") == 0) {
       held_flag = CellCompat::logical(arg[iarg + 1]);
       if (held_flag < 0)
         error->all(FLERR, "Compute cell/props: held = {} (expected yes or no)", arg[iarg + 1]);
     } else
-      error->all(FLERR,
-                 "Compute cell/props: unknown keyword '{}' (expected fluid, wall, turgor or held)",
+      error->all(FLERR, "Compute cell/props: unknown keyword '{}' (expected fluid, wall or held)",
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/props", igroup, fluidtype, walltype);
   walls = std::make_unique<CellTriangles>();
-  cells->set_turgor(measure);
   cells->find_cells();
 
   array_flag = 1;
@@ -176,7 +178,8 @@ void ComputeCellProps::compute_array()
     row[MASS] = cells->mass(c);
     row[VOLUME] = cells->volume(c);
     row[AREA] = cells->area(c);
-    // P_T and pi from the first fix cell/turgor acting on the cell, else this compute's measure and 0
+    // P_T and pi from the first fix cell/turgor acting on the cell, else P_T measured as the fix
+    // would (the wall load under pair cell/wall's particle model, no offset) and pi = 0
     row[TURGOR] = cells->turgor(c);
     row[OSMOTIC] = 0.0;
     FixCellTurgor::Water water{0.0, 0.0, 0.0, 0.0, 0.0};

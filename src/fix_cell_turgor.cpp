@@ -58,7 +58,6 @@ FixCellTurgor::FixCellTurgor(LAMMPS *lmp, int narg, char **arg) :
   check_keywords(given);
 
   cells = std::make_unique<CellReduce>(lmp, "Fix cell/turgor", igroup, fluidtype, walltype);
-  cells->set_turgor(given.measure);
   if (drive.surface_group >= 0) cells->set_surface(group->bitmask[drive.surface_group]);
   if (given.exchanging) {
     // bond type 0 too is out of range there
@@ -89,6 +88,7 @@ int FixCellTurgor::parse_keyword(int narg, char **arg, Keywords &given)
 {
   const std::string key = arg[0];
   const char *value = CellArgs::values(error, "Fix cell/turgor", narg, arg, 1)[0];
+  removed_keyword(key, value);
   if (key == "LP") {
     lp = utils::numeric(FLERR, value, false, lmp);
     given.lp_set = true;
@@ -102,10 +102,6 @@ int FixCellTurgor::parse_keyword(int narg, char **arg, Keywords &given)
     if (!(ea >= 0.0 && ea <= CellLimits::EA_MAX))
       error->all(FLERR, "Fix cell/turgor: activation energy Ea = {} must be >= 0 and <= 1e6 J/mol",
                  ea);
-  } else if (key == "rhow") {
-    rhow = utils::numeric(FLERR, value, false, lmp);
-    if (rhow <= 0.0)
-      error->all(FLERR, "Fix cell/turgor: water density rhow = {} must be > 0", rhow);
   } else if (key == "exchange") {
     return parse_exchange(narg, arg, given);
   } else if (key == "accel") {
@@ -121,15 +117,9 @@ int FixCellTurgor::parse_keyword(int narg, char **arg, Keywords &given)
     return n;
   } else if (key == "file") {
     read_file(value, given);
-  } else if (key == "turgor") {
-    given.measure = value;
   } else if (key == "tau") {
     tau = utils::numeric(FLERR, value, false, lmp);
     if (tau <= 0.0) error->all(FLERR, "Fix cell/turgor: offset time tau = {} must be > 0", tau);
-  } else if (key == "fluid") {
-    fluidtype = utils::inumeric(FLERR, value, false, lmp);
-  } else if (key == "wall") {
-    walltype = utils::inumeric(FLERR, value, false, lmp);
   } else {
     error->all(FLERR, "Fix cell/turgor: unknown keyword '{}'", key);
   }
@@ -169,6 +159,29 @@ void FixCellTurgor::parse_limit(const char *value)
   else
     error->all(FLERR, "Fix cell/turgor: unknown limit action '{}' (expected error or warn)", value);
   limit_set = 1;
+}
+
+/* ----------------------------------------------------------------------
+   keywords no scene used, removed (doc/notes/2026-12-07-keywords.md): stop naming what replaces them
+------------------------------------------------------------------------- */
+
+void FixCellTurgor::removed_keyword(const std::string &key, const char *value)
+{
+  std::string instead;
+  if (key == "turgor")
+    instead = "P_T follows the wall-fluid model (the mean SPH pressure under the wall boundary of "
+              "pair cell/sph; less the running offset D from the wall load under pair cell/wall's "
+              "wall-fluid terms); compute cell/props columns 14 and 15 give the mean SPH pressure "
+              "and the wall load";
+  else if (key == "rhow")
+    instead = "the water crossing the wall has the density 1000 kg/m^3";
+  else if (key == "Tref")
+    instead = "L_P, L_cc and pi0 are given at 298.15 K (25 C), as in apple.cellsph";
+  else if (key == "fluid" || key == "wall")
+    instead = "the cell fluid is atom type 1 and the wall type 2, as tools/cellgen writes them";
+  else
+    return;
+  error->all(FLERR, "Fix cell/turgor: keyword '{} {}' was removed: {}", key, value, instead);
 }
 
 /* ----------------------------------------------------------------------
@@ -756,11 +769,11 @@ double FixCellTurgor::offset_time() const
 }
 
 /* ----------------------------------------------------------------------
-   the turgor that drives the flux. turgor sph: the mean SPH pressure. turgor wall: the mean SPH
-   pressure minus its running mean offset from the wall load, so that the steady state is the wall
-   load P_W = pi + psi_ext while each transfer sees the fluid's instantaneous, smooth response (the
-   wall load alone carries the wall's ringing into the mass at large dtw k); the mean advances on
-   transfer steps only, so a run split in two continues as one
+   the turgor that drives the flux (doc/model.md §1.4): the mean SPH pressure, which under the wall
+   boundary equals the wall load within 0.2 %. Under the seed's particle wall-fluid model (P_SPH ~21 %
+   above the wall load) the mean SPH pressure minus its running mean offset D from the wall load, so
+   that the steady state is the wall load P_W = pi + psi_ext while each transfer sees the fluid's
+   instantaneous, smooth response; D advances on transfer steps only, so a split run continues as one
 ------------------------------------------------------------------------- */
 
 double FixCellTurgor::flux_turgor(int c, TurgorState::Cell &s, bool advance)

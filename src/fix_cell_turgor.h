@@ -131,16 +131,16 @@ class FixCellTurgor : public Fix, public CellWallStretch {
   // what the fix command's keywords set besides the members, for the checks after them
   struct Keywords {
     bool lp_set = false, pi0_set = false;
-    bool exchanging = false;         // 'exchange' given
-    int bondtype = 0;                // 'exchange ... bondtype N'
-    std::string areas;               // 'exchange ... areas FILE'
-    bool lcc_file = false;           // 'exchange file ...': L_cc from the parameter file
-    double file_lcc = -1.0;          // turgor_Lcc of the last 'file', -1 if none
-    std::string measure = "wall";    // 'turgor sph|wall'
+    bool exchanging = false;    // 'exchange' given
+    int bondtype = 0;           // 'exchange ... bondtype N'
+    std::string areas;          // 'exchange ... areas FILE'
+    bool lcc_file = false;      // 'exchange file ...': L_cc from the parameter file
+    double file_lcc = -1.0;     // turgor_Lcc of the last 'file', -1 if none
   };
   int parse_keyword(int narg, char **arg, Keywords &given);
   int parse_exchange(int narg, char **arg, Keywords &given);
   void parse_limit(const char *value);
+  void removed_keyword(const std::string &key, const char *value);
   void read_file(const char *file, Keywords &given);
   void check_keywords(const Keywords &given);
 

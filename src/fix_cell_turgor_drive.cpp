@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
-   fix cell/turgor's external drive: psi_ext, air (h_m or a laminar flow) or a drying curve, and
+   fix cell/turgor's external drive: psi_ext, air (T, RH, h_m) or a drying curve, and
    the cell temperature, given or (cooling) that of the exposed surface's heat balance
    (doc/model.md §5.1, §5.7-5.10, §5.14)
 ------------------------------------------------------------------------- */
@@ -24,13 +24,13 @@ TurgorDrive::TurgorDrive(LAMMPS *lmp, const std::string &command) :
     Pointers(lmp), kind(PSI), cooling(0), surface_group(-1), temperature(0.0), mass_transfer(0.0),
     psi_ext(0.0), target(0.0), air_temperature(0.0),
     command(command), psi{0.0, "", -1}, temp{0.0, "", -1}, air_t{0.0, "", -1}, air_rh{0.0, "", -1},
-    air_hm{0.0, "", -1}, curve{0.0, "", -1}, air_speed{0.0, "", -1}, air_length{0.0, "", -1},
-    air_flow(0), temp_set(0), area_fraction(1.0), hm(0.0), rho_sat(0.0), rho_air(0.0)
+    air_hm{0.0, "", -1}, curve{0.0, "", -1}, temp_set(0), area_fraction(1.0), hm(0.0), rho_sat(0.0),
+    rho_air(0.0)
 {
 }
 
 /* ----------------------------------------------------------------------
-   psi value, air T RH hm|flow U L [area f] [surface group-ID], curve v_name, temp T,
+   psi value, air T RH hm [area f] [surface group-ID], curve v_name, temp T,
    cooling yes|no
 ------------------------------------------------------------------------- */
 
@@ -68,21 +68,16 @@ int TurgorDrive::parse(int narg, char **arg, double tref)
   air_t = CellQuantity::parse(lmp, v[0], command + ": air T");
   air_rh = CellQuantity::parse(lmp, v[1], command + ": air RH");
   int used = 4;
-  air_flow = strcmp(v[2], "flow") == 0;
-  if (air_flow) {
-    v = CellArgs::values(error, command, narg, arg, 5);
-    air_speed = CellQuantity::parse(lmp, v[3], command + ": air flow U");
-    air_length = CellQuantity::parse(lmp, v[4], command + ": air flow L");
-    used = 6;
-  } else {
-    air_hm = CellQuantity::parse(lmp, v[2], command + ": air hm");
-  }
+  if (strcmp(v[2], "flow") == 0)
+    error->all(FLERR,
+               "{}: air's 'flow U L' was removed: give the mass-transfer coefficient h_m (m/s; "
+               "2 cm/s for air at 0.5-2 m/s over a slab, doc/model.md §10.2)",
+               command);
+  air_hm = CellQuantity::parse(lmp, v[2], command + ": air hm");
   // numbers are checked now, variables at every transfer (placeholders pass the check)
   const double t0 = air_t.name.empty() ? air_t.value : tref;
   const double rh0 = air_rh.name.empty() ? air_rh.value : 1.0;
   check_air(t0, rh0, air_hm.name.empty() ? air_hm.value : 0.0, "");
-  if (air_flow && air_t.name.empty() && air_speed.name.empty() && air_length.name.empty())
-    check_air(t0, rh0, flow_transfer(t0, air_speed.value, air_length.value), "");
   // optional 'area f' and 'surface group-ID', in either order
   while (used + 1 < narg) {
     const char *word = arg[used], *next = arg[used + 1];
@@ -125,7 +120,7 @@ void TurgorDrive::check(double tref)
 
 void TurgorDrive::init()
 {
-  for (CellQuantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve, &air_speed, &air_length})
+  for (CellQuantity *in : {&psi, &temp, &air_t, &air_rh, &air_hm, &curve})
     in->resolve(lmp, command + ": variable");
 }
 
@@ -155,7 +150,7 @@ void TurgorDrive::evaluate(double &time, double advance)
     check_psi(psi_ext, command, step);
   } else if (kind == AIR) {
     const double tair = air_t.get(lmp), rh = air_rh.get(lmp);
-    hm = air_flow ? flow_transfer(tair, air_speed.get(lmp), air_length.get(lmp)) : air_hm.get(lmp);
+    hm = air_hm.get(lmp);
     mass_transfer = hm;
     check_air(tair, rh, hm, step);
     if (cooling) check_cooling(tair);
@@ -255,29 +250,6 @@ void TurgorDrive::check_cooling(double t) const
                "{}: air temperature T = {} K is outside {}-{} K, the range of cooling (liquid "
                "water, the vapour diffusivity in air behind h_c)",
                command, t, CellWater::TRIPLE_T, CellWater::COOLING_TMAX);
-}
-
-/* ----------------------------------------------------------------------
-   h_m of air at T flowing at U >= 0 along a sample of length L > 0: laminar flat plate,
-   Sh = 0.664 Re^(1/2) Sc^(1/3) for Re < 5e5 (doc/model.md §5.8)
-------------------------------------------------------------------------- */
-
-double TurgorDrive::flow_transfer(double t, double u, double l) const
-{
-  if (!(u >= 0.0)) error->all(FLERR, "{}: air speed U = {} m/s must be >= 0", command, u);
-  if (!(l > 0.0)) error->all(FLERR, "{}: sample length L = {} m must be > 0", command, l);
-  if (!(t > 250.0 && t < 450.0))
-    error->all(FLERR,
-               "{}: air temperature T = {} K is outside 250-450 K, the range of the vapour "
-               "diffusivity in air behind 'flow' (give h_m instead)",
-               command, t);
-  const double re = CellWater::reynolds(t, u, l);
-  if (!(re < 5e5))
-    error->all(FLERR,
-               "{}: air flow U = {} m/s along L = {} m has Re = {:.4g}, beyond the laminar "
-               "flat-plate correlation (Re < 5e5): give h_m instead",
-               command, u, l, re);
-  return CellWater::plate_transfer(t, u, l);
 }
 
 /* ----------------------------------------------------------------------

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor's external drive (doc/model.md §5.1, §5.7-5.10): the cell temperature T and one
-   of a water potential psi_ext, air of temperature, humidity and h_m (or a flow giving h_m) on
+   of a water potential psi_ext, air of temperature, humidity and h_m on
    the exposed wall, or a prescribed drying curve X/X0(t); the keywords psi, air, curve, temp and
    cooling. evaluate() takes the inputs of one evaluation, flux() gives one cell's water flux from
    them; with cooling, cool() sets T to the surface temperature of the heat balance (§5.14).
@@ -88,8 +88,7 @@ class TurgorDrive : protected Pointers {
   std::string command;
   std::string drives;    // the drive keywords given, for the check
   CellQuantity psi, temp, air_t, air_rh, air_hm, curve;
-  CellQuantity air_speed, air_length;    // 'flow U L': h_m from the flat-plate correlation
-  int air_flow, temp_set;
+  int temp_set;
   double area_fraction;           // share of the wall area in contact with the air
   double hm, rho_sat, rho_air;    // h_m, rho_v,sat(T) and RH rho_v,sat(T_air) of the evaluation
 
@@ -98,7 +97,6 @@ class TurgorDrive : protected Pointers {
   void check_temperature(double t, const std::string &when) const;
   void check_cooling(double t) const;
   void surface(double t);
-  double flow_transfer(double t, double u, double l) const;
 };
 
 }    // namespace LAMMPS_NS

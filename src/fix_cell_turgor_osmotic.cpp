@@ -24,19 +24,15 @@ TurgorOsmotic::TurgorOsmotic(LAMMPS *lmp, const std::string &command) :
 }
 
 /* ----------------------------------------------------------------------
-   Tref T, solids w_s, isotherm gab Xm C K | none, osmotic fixed | vanthoff
+   solids w_s, isotherm gab Xm C K | none, osmotic fixed | vanthoff
 ------------------------------------------------------------------------- */
 
 int TurgorOsmotic::parse(int narg, char **arg)
 {
   const std::string key = arg[0];
-  if (key != "Tref" && key != "solids" && key != "isotherm" && key != "osmotic") return 0;
+  if (key != "solids" && key != "isotherm" && key != "osmotic") return 0;
   const char *value = CellArgs::values(error, command, narg, arg, 1)[0];
-  if (key == "Tref") {
-    tref = utils::numeric(FLERR, value, false, lmp);
-    if (!(tref > 0.0))
-      error->all(FLERR, "{}: reference temperature Tref = {} K must be > 0", command, tref);
-  } else if (key == "solids") {
+  if (key == "solids") {
     solids_fraction = utils::numeric(FLERR, value, false, lmp);
     if (!(solids_fraction > 0.0 && solids_fraction < 1.0))
       error->all(FLERR, "{}: solids = {} must be in (0, 1) (wet-basis mass fraction)", command,

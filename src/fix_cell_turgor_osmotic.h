@@ -2,7 +2,7 @@
    cellsph - SPH-DEM plant cells for LAMMPS
    fix cell/turgor's osmotic pressure of a cell (doc/model.md §5.5, §5.10): the solutes' pi0 at
    Tref, fixed or van 't Hoff in the cell's water, and with dry solids the GAB sorption isotherm;
-   the keywords osmotic, solids, isotherm and Tref and the parameter file's turgor_solids and
+   the keywords osmotic, solids and isotherm and the parameter file's turgor_solids and
    turgor_gab_*. pressure() is a pure function of the cell's state.
 ------------------------------------------------------------------------- */
 
@@ -38,7 +38,7 @@ class TurgorOsmotic : protected Pointers {
   // pi0 is diluted by the cell's water (van 't Hoff), not fixed
   bool vanthoff() const { return law == VANTHOFF; }
 
-  double tref;               // reference temperature of pi0 and L_P (K)
+  double tref;               // reference temperature of pi0 and L_P (K): 298.15
   double solids_fraction;    // wet-basis solids fraction w_s, 0 = none
 
  private:

@@ -332,11 +332,15 @@ void PairCellWall::unpack_forward_comm(int n, int first, double *buf)
 
 /* ----------------------------------------------------------------------
    tally the fluid-to-wall force of the cell's own fluid on wall atoms from the next force
-   evaluation on; one pair of types at a time
+   evaluation on; one pair of types at a time. False (nothing tallied) without wall-fluid terms
+   (repulsion or adhesion) between the two types: the SPH wall boundary then holds the fluid
 ------------------------------------------------------------------------- */
 
 bool PairCellWall::request_wall_load(int fluidtype, int walltype, const std::string &who)
 {
+  const int lo = std::min(fluidtype, walltype), hi = std::max(fluidtype, walltype);
+  if (!allocated || !setflag[lo][hi] || !(coeffs[lo][hi].terms & (REPULSION | ADHESION)))
+    return false;
   if (load_wall && (load_fluid != fluidtype || load_wall != walltype))
     error->all(FLERR,
                "{}: pair cell/wall already tallies the wall load for fluid type {} and wall type "

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The turgor-loss point of a drying cell against the membrane law, for several resolutions, airs,
-# background pressures, turgor measures and accel (bench/accuracy/turgor_loss_point.lmp; the table's columns:
+# background pressures and accel (bench/accuracy/turgor_loss_point.lmp; the table's columns:
 # bench/accuracy/turgor_loss_point.py). Each point is "TAG -var NAME VALUE ...", e.g.
 #   bench/accuracy/turgor_loss_point.sh "c -var PbD 3e5" "w3 -var auto 3e4" \
 #     "s70 -var auto 3e4 -var nwall 1092 -var nfluid 1647 -var h 12.2e-6 -var dt 2e-8 -var ws 1 -var accel 3e6"

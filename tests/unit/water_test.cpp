@@ -57,11 +57,10 @@ TEST(Water, ViscosityFollowsVogel)
   EXPECT_NEAR(water_viscosity(343.15), 0.400e-3, 0.0015e-3);
 }
 
-// air at 1 atm, 300 K: mu = 1.846e-5 Pa s, rho = 1.177 kg/m^3, D = 2.56e-5 m^2/s (Bolz & Tuve),
+// air at 1 atm, 300 K: rho = 1.177 kg/m^3, D = 2.56e-5 m^2/s (Bolz & Tuve),
 // k = 0.0263 W/(m K); lambda = 2.501 MJ/kg at 0 C, 2.442 at 25 C
 TEST(Water, AirPropertiesAndLatentHeat)
 {
-  EXPECT_NEAR(air_viscosity(300.0), 1.846e-5, 0.01e-5);
   EXPECT_NEAR(air_density(300.0), 1.177, 0.002);
   EXPECT_NEAR(vapour_diffusivity(300.0), 2.56e-5, 0.02e-5);
   EXPECT_NEAR(air_conductivity(300.0), 0.0263, 0.0003);
@@ -69,16 +68,10 @@ TEST(Water, AirPropertiesAndLatentHeat)
   EXPECT_NEAR(latent_heat(298.15), 2.442e6, 0.001e6);
 }
 
-// flat plate: Sh = h_m L / D = 0.664 Re^1/2 Sc^1/3; Le of air about 0.85, so h_c/(h_m rho c_p)
-// = Le^(2/3) about 0.9
-TEST(Water, PlateAndHeatTransfer)
+// Le of air about 0.85, so h_c/(h_m rho c_p) = Le^(2/3) about 0.9
+TEST(Water, HeatTransfer)
 {
-  const double t = 300.0, u = 2.0, l = 0.05;
-  const double re = reynolds(t, u, l);
-  EXPECT_NEAR(re, u * l / (air_viscosity(t) / air_density(t)), 1e-9 * re);
-  const double sc = air_viscosity(t) / air_density(t) / vapour_diffusivity(t);
-  const double sh = plate_transfer(t, u, l) * l / vapour_diffusivity(t);
-  EXPECT_NEAR(sh, 0.664 * std::sqrt(re) * std::cbrt(sc), 1e-12 * sh);
+  const double t = 300.0;
   const double ratio = heat_transfer(t, 0.02) / (0.02 * air_density(t) * AIR_CP);
   EXPECT_GT(ratio, 0.85);
   EXPECT_LT(ratio, 0.95);
