@@ -3,7 +3,8 @@
    The contracts between cellsph's styles: the names of the per-atom fields they share, the wall
    load that the pair styles tally for the per-cell sums (cell_reduce.h), and a typed search for a
    style among the defined fixes. A style that offers or uses one of these includes this header,
-   not the other style's.
+   not the other style's. The styles over the same cells find their shared registry and sums by
+   CellSet::join (cell_set.h), through their CellReduce.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_STYLES_H
