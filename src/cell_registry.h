@@ -23,6 +23,8 @@ namespace LAMMPS_NS {
 class CellRegistry : protected Pointers {
  public:
   CellRegistry(class LAMMPS *, const std::string &command, int igroup);
+  // the style named in the messages from here on
+  void name(const std::string &who) { command = who; }
 
   // the cells: distinct molecule IDs > 0 of the group's atoms on all ranks (collective, O(cells))
   void find_cells();

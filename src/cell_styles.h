@@ -3,7 +3,9 @@
    The contracts between cellsph's styles: the names of the per-atom fields they share, the wall
    load that the pair styles tally for the per-cell sums (cell_reduce.h), the wall's stretch that
    a fix hands the wall's bond style, and a typed search for a style among the defined fixes. A
-   style that offers or uses one of these includes this header, not the other style's.
+   style that offers or uses one of these includes this header, not the other style's. The styles
+   over the same cells find their shared registry and sums by CellSet::join (cell_set.h), through
+   their CellReduce.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CELL_STYLES_H

@@ -121,7 +121,6 @@ ComputeCellProps::ComputeCellProps(LAMMPS *lmp, int narg, char **arg) :
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/props", igroup, fluidtype, walltype);
-  walls = std::make_unique<CellTriangles>();
   cells->find_cells();
 
   array_flag = 1;
@@ -165,7 +164,7 @@ void ComputeCellProps::init()
 void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
-  cells->reduce(nullptr, &mine, &corners);
+  cells->reduce(nullptr, true);
   count_outside();
   if (!homes_checked) check_homes();
 
@@ -227,7 +226,7 @@ void ComputeCellProps::compute_vector()
 {
   invoked_vector = update->ntimestep;
   if (invoked_array != update->ntimestep) compute_array();
-  cells->held_triangles(mine, *walls, held);
+  cells->held_triangles(held);
 }
 
 /* ----------------------------------------------------------------------
@@ -267,7 +266,7 @@ void ComputeCellProps::check_homes()
 
 void ComputeCellProps::count_outside()
 {
-  cells->home_triangles(mine, corners, *walls);
+  walls = &cells->home_triangles();
   const CellRegistry &registry = cells->registry();
   const int nhome = (int) cells->home_cells().size();
 

@@ -54,11 +54,10 @@ class ComputeCellProps : public Compute {
 
  private:
   std::unique_ptr<CellReduce> cells;
-  std::unique_ptr<CellTriangles> walls;    // the wall triangles of this rank's home cells
+  const CellTriangles *walls = nullptr;    // the wall triangles of this rank's home cells
   std::vector<FixCellTurgor *> turgor;
   int fluidtype;
-  std::vector<double> mine, centre;     // this rank's wall triangles, per home cell ball tests
-  std::vector<tagint> corners;          // the corner IDs of mine
+  std::vector<double> centre;           // per home cell ball tests
   std::vector<double> away, got;        // fluid positions sent to, received from the homes
   std::vector<double> outside, rows;    // per home cell: fluid atoms outside, rows of the array
   std::vector<double> all;              // every cell's row

@@ -109,7 +109,6 @@ ComputeCellShape::ComputeCellShape(LAMMPS *lmp, int narg, char **arg) :
                  arg[iarg]);
   }
   cells = std::make_unique<CellReduce>(lmp, "Compute cell/shape", igroup, 0, walltype, false);
-  walls = std::make_unique<CellTriangles>();
   cells->find_cells();
 
   array_flag = 1;
@@ -151,8 +150,8 @@ void ComputeCellShape::init()
 void ComputeCellShape::compute_array()
 {
   invoked_array = update->ntimestep;
-  cells->reduce(nullptr, &mine, &corners);
-  cells->home_triangles(mine, corners, *walls);
+  cells->reduce(nullptr, true);
+  walls = &cells->home_triangles();
 
   const std::vector<int> &home = cells->home_cells();
   rows.assign(home.size() * NCOLUMN, 0.0);
@@ -186,7 +185,7 @@ void ComputeCellShape::compute_vector()
 {
   invoked_vector = update->ntimestep;
   if (invoked_array != update->ntimestep) compute_array();
-  cells->held_triangles(mine, *walls, held);
+  cells->held_triangles(held);
 }
 
 /* ----------------------------------------------------------------------

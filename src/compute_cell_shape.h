@@ -49,13 +49,12 @@ class ComputeCellShape : public Compute {
  private:
   enum { PLANE_X, PLANE_Y, PLANE_Z, PLANE_PRINCIPAL, PLANE_NORMAL };
   std::unique_ptr<CellReduce> cells;
-  std::unique_ptr<CellTriangles> walls;    // the wall triangles of this rank's home cells
+  const CellTriangles *walls = nullptr;    // the wall triangles of this rank's home cells
   int plane;
   double normal[3] = {0.0, 0.0, 1.0};    // plane normal: the unit normal
   double offset;
-  std::vector<double> mine, rows, all;    // this rank's triangles, home cells' rows, every row
-  std::vector<tagint> corners;
-  double held[3];       // the vector (held yes): wall triangles held (CellReduce::held_triangles)
+  std::vector<double> rows, all;    // home cells' rows, every row
+  double held[3];       // the vector (held yes): wall triangles held (CellSet::held_triangles)
   int held_flag = 0;    // held yes: the vector is on
 
   void measure(int h, double *row);

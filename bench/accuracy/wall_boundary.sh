@@ -18,12 +18,8 @@
 # About 25 minutes on 2 free cores (H alone about 40, estimated; under load 2 hours);
 # `bench/accuracy/wall_boundary.sh A` runs one part.
 set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-build=${CELLSPH_BUILD:-$here/../../build}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
-export LAMMPS_POTENTIALS=$here/../../potentials
+source "$(dirname "${BASH_SOURCE[0]}")/../common/setup.sh"
+bench_work
 parts=${1:-ABC}
 source "$here/../common/scaled_cell.sh"
 hmode=fixed K=20e6 hdx=1.27 popt="kernel wendland"

@@ -11,12 +11,8 @@
 # MODES (default "inflate shrink"): also shrinkbg, shrunk to 0.35 x without adhesion, the fluid
 # held by pair cell/sph background 3e5 (doc/pair_cell_sph.md, background pressure).
 set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-build=${CELLSPH_BUILD:-$here/../../build}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
-export LAMMPS_POTENTIALS=$here/../../potentials
+source "$(dirname "${BASH_SOURCE[0]}")/../common/setup.sh"
+bench_work
 source "$here/../common/scaled_cell.sh"
 declare -A NFLUID=([312]=450 [642]=733 [1092]=1624 [2562]=3900 [5762]=8800 [10242]=15600)
 for want in ${*:-312 1092 2562 5762 10242}; do

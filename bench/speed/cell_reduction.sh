@@ -12,19 +12,20 @@
 # their reduction, the per-cell water logic, the mass update), wall-clock and CPU (wall x the
 # %CPU of timer full: on a loaded host a rank waits for a core, and the CPU time is the work it
 # did), averaged over ranks, the least of REPEAT runs (default 3: the one least disturbed). CELLS="1000 10000" limits the sizes.
+# COMPUTES=1 adds compute cell/props, COMPUTES=2 compute cell/shape too, each read every step
+# (their time is in Modify then: with the shared sums of src/cell_set.h the three styles take one
+# reduction per step, before it three).
 # The last two columns are message sizes per rank and reduction computed from the exchange
 # pattern, not measured: one MPI_Allreduce of 25 doubles per cell (the design before the cell
 # registry), and the registry's 26 doubles (cell index + 25 sums) to the home rank and 1 double
 # (dM/M) back per split cell, each rank being home to about half of them (0 on 1 rank).
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
+source "$(dirname "${BASH_SOURCE[0]}")/../common/setup.sh"
 out=${OUT:-$root/bench/out/cell_reduction}
 mkdir -p "$out"
 [ $# -gt 0 ] || set -- "after=$root/build/cellsphplugin.so"
-lmp=$root/build/bin/lmp
+lmp=$build/bin/lmp
 mpi=(mpirun -np 2)
-if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 export OMPI_MCA_rmaps_base_oversubscribe=1
 
 printf "%8s %6s %6s" cells split ranks
@@ -45,7 +46,7 @@ for n in ${CELLS:-1000 10000 100000}; do
       for r in $(seq "${REPEAT:-3}"); do
         log=$out/log.$label.$n.np$ranks.$r
         (cd "$out" && "${run[@]}" -in "$here/cell_reduction.lmp" -log "$log" -screen none \
-          -var data "$data" -var plugin "$plugin" -var steps "$steps")
+          -var data "$data" -var plugin "$plugin" -var steps "$steps" -var computes "${COMPUTES:-0}")
         # Modify | min | avg | max | %varavg | %CPU | %total: the average over ranks
         modify=$(awk '/^Modify/ {print $5}' "$log")
         cpu=$(awk '/^Modify/ {print $5 * $11 / 100}' "$log")

@@ -21,16 +21,13 @@
 # steps, default 100: the slab without cooling went unstable in pair cell/sph after 130 of them),
 # NP (ranks of the LAMMPS runs, default 1).
 set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-build=${CELLSPH_BUILD:-$here/../../build}
+source "$(dirname "${BASH_SOURCE[0]}")/../common/setup.sh"
 work=${WORK:-$(mktemp -d)}
 np=${NP:-1}
 maxout=${MAXOUT:-20}
 tsteps=${TSTEPS:-100}
 mkdir -p "$work"
 cd "$work"
-if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
-export LAMMPS_POTENTIALS=$here/../../potentials
 if [ "$np" = 1 ]; then lmp=("$build/bin/lmp"); else lmp=(mpirun -np "$np" "$build/bin/lmp"); fi
 
 python3 - <<'PY'

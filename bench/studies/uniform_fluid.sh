@@ -15,12 +15,8 @@
 # e.g. VARIANTS="base:- jig02:jig=0.2" CASES="seed" bench/studies/uniform_fluid.sh
 # (seed case, 1 rank: 14-15 min each with the 2 cores loaded about 3 times over)
 set -euo pipefail
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-build=${CELLSPH_BUILD:-$here/../../build}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
-export LAMMPS_POTENTIALS=$here/../../potentials
+source "$(dirname "${BASH_SOURCE[0]}")/../common/setup.sh"
+bench_work
 source "$here/../common/scaled_cell.sh"
 echo "| variant | case | wall, fluid | stretch | P_SPH/P_wall-1 | P_wall/law-1 | std/mean | between | within | worst shell (at) | wall shell | s |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
