@@ -5,7 +5,8 @@
 # build and the new one each time nsteps from it (bench/speed/cell_model_timed.lmp), with the load
 # average (uptime) before each run. One line per run: loop time (s), "% CPU use", particle-steps/s
 # per core by the wall clock (the bench's figure) and by CPU time (loop time x CPU use: less
-# sensitive to the load of a shared machine). Models: adaptive (h adaptive 1.27, the full model),
+# sensitive to the load of a shared machine). The restarts are kept in the work folder and reused.
+# Models: adaptive (h adaptive 1.27, the full model),
 # boundary (h fixed 12.2 um), boundary-h14 (h fixed 14.3 um, the adaptive run's mean h).
 #   bash bench/speed/compare_builds.sh OLD_BUILD NEW_BUILD [nsteps=1000] [repeats=3] \
 #     [models="adaptive boundary-h14"]
@@ -29,6 +30,7 @@ for model in $models; do
     boundary) vars=(-var hmode fixed -var hfix 12.2e-6) ;;
     boundary-h14) vars=(-var hmode fixed -var hfix 14.3e-6) ;;
   esac
+  [ -f "turgid.$model.restart" ] && continue    # made once per work folder
   printf 'include %s\nwrite_restart turgid.%s.restart\n' "$here/cell_model_speed.lmp" "$model" >ramp.lmp
   "$new/bin/lmp" -in ramp.lmp -var nsteps 0 -var bnd 1 -var gap "$gap" "${vars[@]}" -log "log.ramp.$model" >/dev/null
 done
