@@ -58,9 +58,11 @@ namespace CellKernel {
     return {1.0 / h, sigma(kernel, dim) / hd, sigma(kernel, dim) / (hd * h * h)};
   }
 
-  // shape f(q) and slope f'(q)/q, valid for 0 <= q < support; zero beyond is the caller's cutoff
+  // shape f(q) and slope f'(q)/q, valid for 0 <= q < support; zero beyond is the caller's cutoff;
+  // curve f''(q) (d^2 W/dh^2 of h adaptive, doc/pair_cell_sph.md)
   template <int K> inline double shape(double q);
   template <int K> inline double slope(double q);
+  template <int K> inline double curve(double q);
 
   // Wendland C2: f = (1 - q/2)^4 (1 + 2q), f'/q = -5 (1 - q/2)^3
   template <> inline double shape<WENDLAND>(double q)
@@ -73,6 +75,12 @@ namespace CellKernel {
   {
     const double a = 1.0 - 0.5 * q;
     return -5.0 * a * a * a;
+  }
+  // f'' = (1 - q/2)^2 (10 q - 5)
+  template <> inline double curve<WENDLAND>(double q)
+  {
+    const double a = 1.0 - 0.5 * q;
+    return a * a * (10.0 * q - 5.0);
   }
 
   // cubic B-spline (M4): f = 1 - 3q^2/2 + 3q^3/4 (q < 1), (2 - q)^3/4 (1 <= q < 2)
@@ -88,6 +96,12 @@ namespace CellKernel {
     const double a = 2.0 - q;
     return -0.75 * a * a / q;
   }
+  // f'' = -3 + 9q/2 (q < 1), 3 (2 - q)/2 (1 <= q < 2)
+  template <> inline double curve<CUBIC>(double q)
+  {
+    if (q < 1.0) return -3.0 + 4.5 * q;
+    return 1.5 * (2.0 - q);
+  }
 
   // quintic B-spline (M6, Morris 1997): f = (3-q)+^5 - 6 (2-q)+^5 + 15 (1-q)+^5, (x)+ = max(x, 0)
   template <> inline double shape<QUINTIC>(double q)
@@ -102,6 +116,12 @@ namespace CellKernel {
     const double a2 = a * a, b2 = b * b, c2 = c * c;
     return (-5.0 * a2 * a2 + 30.0 * b2 * b2 - 75.0 * c2 * c2) / q;
   }
+  // f'' = 20 (3-q)+^3 - 120 (2-q)+^3 + 300 (1-q)+^3
+  template <> inline double curve<QUINTIC>(double q)
+  {
+    const double a = 3.0 - q, b = fmax(2.0 - q, 0.0), c = fmax(1.0 - q, 0.0);
+    return 20.0 * a * a * a - 120.0 * b * b * b + 300.0 * c * c * c;
+  }
 
   // Lucy quartic (support h): f = (1 + 3q)(1 - q)^3, f'/q = -12 (1 - q)^2
   template <> inline double shape<LUCY>(double q)
@@ -113,6 +133,12 @@ namespace CellKernel {
   {
     const double a = 1.0 - q;
     return -12.0 * a * a;
+  }
+  // f'' = 12 (1 - q)(3q - 1)
+  template <> inline double curve<LUCY>(double q)
+  {
+    const double a = 1.0 - q;
+    return 12.0 * a * (3.0 * q - 1.0);
   }
 
   // W(r) and (1/r) dW/dr for r inside the support

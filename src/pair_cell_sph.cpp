@@ -4,7 +4,8 @@
    One compute() = density pass over the half neighbour list (rho_j accumulated on ghosts too,
    then summed into owners by reverse comm), equation of state on owned atoms, forward comm of
    rho and pressure, force pass. The density pass keeps the pairs inside the kernel support with
-   m_i m_j (1/r) dW/dr, so the force pass has no cutoff test, square root or kernel. A half list
+   m_i m_j (1/r) dW/dr, so the force pass has no cutoff test, square root or kernel (h adaptive:
+   with r_ij and m_i m_j, the force pass taking the gradients at the converged h). A half list
    evaluates each pair once; a full list would save the reverse comm but evaluate every pair twice.
 ------------------------------------------------------------------------- */
 
@@ -38,10 +39,10 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
     rho0(nullptr), bulk(nullptr), mu(nullptr), h(nullptr), background(0.0), background_set(0),
     background_auto(0), background_min(0.0), pc(nullptr), wself(nullptr), invrho0(nullptr),
     fluid(nullptr), viscous(0), shared{0.0, 0.0}, irho(-1), ipressure(-1), ih(-1), iomega(-1),
-    hcap(nullptr), hscale(nullptr), dsum(nullptr), boundary(nullptr), walls(0), wall(lmp, this),
-    commode(COMM_DENSITY), restart_version(0), prho2(nullptr), rhoinv(nullptr), nmax(0),
-    pairfirst(nullptr), pairj(nullptr), pairdw(nullptr), pairdwj(nullptr), pairr(nullptr),
-    pairmu(nullptr), maxfirst(0), maxpairs(0)
+    hcap(nullptr), hscale(nullptr), dsum(nullptr), d2sum(nullptr), hsum(nullptr), hstale(0),
+    boundary(nullptr), walls(0), wall(lmp, this), commode(COMM_DENSITY), restart_version(0),
+    prho2(nullptr), rhoinv(nullptr), nmax(0), pairfirst(nullptr), pairj(nullptr), pairdw(nullptr),
+    pairr(nullptr), pairmu(nullptr), maxfirst(0), maxpairs(0)
 {
   restartinfo = 1;
   temp_set = 0;
@@ -50,7 +51,7 @@ PairCellSPH::PairCellSPH(LAMMPS *lmp) :
   writedata = 1;
   reinitflag = 0;
   comm_forward = 5;    // rho, pressure (the kernel deficit, h, Omega); with walls: triangle tags
-  comm_reverse = 4;    // rho (dS/dh, the kernel deficit, its dh); or the wall load
+  comm_reverse = 5;    // rho (dS/dh, d2S/dh2, the kernel deficit, its dh); or the wall load
   // compute pair: the wall boundary's interval between exact evaluations and its last jump, and
   // the background pressure P_b in use
   nextra = 3;
@@ -67,7 +68,6 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pairfirst);
   memory->destroy(pairj);
   memory->destroy(pairdw);
-  memory->destroy(pairdwj);
   memory->destroy(pairr);
   memory->destroy(pairmu);
   if (allocated) {
@@ -136,14 +136,13 @@ void PairCellSPH::compute(int eflag, int vflag)
     }
 
   typedef void (PairCellSPH::*Loop)();
-#define CELLSPH_FORCES(V, E)                                             \
-  {                                                                      \
-    &PairCellSPH::sum_forces<V, E, 0>, &PairCellSPH::sum_forces<V, E, 1> \
-  }
-  static const Loop FORCES[2][2][2] = {{CELLSPH_FORCES(0, 0), CELLSPH_FORCES(0, 1)},
-                                       {CELLSPH_FORCES(1, 0), CELLSPH_FORCES(1, 1)}};
-#undef CELLSPH_FORCES
-  (this->*FORCES[viscous][evflag ? 1 : 0][peratom])();
+  static const Loop FORCES[2][2] = {
+      {&PairCellSPH::sum_forces<0, 0>, &PairCellSPH::sum_forces<0, 1>},
+      {&PairCellSPH::sum_forces<1, 0>, &PairCellSPH::sum_forces<1, 1>}};
+  if (peratom)
+    forces_h();
+  else
+    (this->*FORCES[viscous][evflag ? 1 : 0])();
   if (walls) wall.forces(evflag);
 
   if (vflag_fdotr) virial_fdotr_compute();
@@ -157,6 +156,12 @@ void PairCellSPH::compute(int eflag, int vflag)
 
 void PairCellSPH::density_pass(int first)
 {
+  // h adaptive: the ghosts' h and every atom's kernel constants at the h of the last iteration
+  if (hstale) {
+    forward(COMM_H);
+    kernel_scales();
+    hstale = 0;
+  }
   // per-atom h grown beyond the split's allowance: split again (split_list)
   if (walls && hmode != HFIXED && wall.outgrown()) wall.split_list(2.0 * neighbor->skin);
   typedef void (PairCellSPH::*Loop)(int);
@@ -174,23 +179,19 @@ void PairCellSPH::density_pass(int first)
        {CELLSPH_DENSITY(1, 1, 0), CELLSPH_DENSITY(1, 1, 1)}}};
 #undef CELLSPH_DENSITY
   typedef void (PairCellSPH::*Resum)();
-#define CELLSPH_RESUM(V)                                     \
-  {                                                          \
-    &PairCellSPH::resum_density<CellKernel::WENDLAND, V>,    \
-        &PairCellSPH::resum_density<CellKernel::CUBIC, V>,   \
-        &PairCellSPH::resum_density<CellKernel::QUINTIC, V>, \
-        &PairCellSPH::resum_density<CellKernel::LUCY, V>     \
-  }
-  static const Resum RESUM[2][CellKernel::NTYPES] = {CELLSPH_RESUM(0), CELLSPH_RESUM(1)};
-#undef CELLSPH_RESUM
+  static const Resum RESUM[CellKernel::NTYPES] = {&PairCellSPH::resum_density<CellKernel::WENDLAND>,
+                                                  &PairCellSPH::resum_density<CellKernel::CUBIC>,
+                                                  &PairCellSPH::resum_density<CellKernel::QUINTIC>,
+                                                  &PairCellSPH::resum_density<CellKernel::LUCY>};
   if (!first && hdrift < HMARGIN) {
-    (this->*RESUM[viscous][kernel])();
+    (this->*RESUM[kernel])();
   } else {
     (this->*DENSITY[walls][viscous][hmode != HFIXED][kernel])(first);
     hdrift = 0.0;
   }
   if (walls && first) wall.after_density();
   reverse(first ? COMM_DENSITY : COMM_SUMS);
+  if (hmode != HFIXED) scale_sums();
 }
 
 /* ----------------------------------------------------------------------
@@ -204,6 +205,8 @@ void PairCellSPH::destroy_peratom()
   memory->destroy(rhoinv);
   memory->destroy(hscale);
   memory->destroy(dsum);
+  memory->destroy(d2sum);
+  memory->destroy(hsum);
   wall.destroy();
 }
 
@@ -216,13 +219,15 @@ void PairCellSPH::grow_peratom()
   if (hmode != HFIXED) {
     memory->create(hscale, nmax, 4, "pair:hscale");
     memory->create(dsum, nmax, "pair:dsum");
+    memory->create(d2sum, nmax, "pair:d2sum");
+    memory->create(hsum, nmax, 3, "pair:hsum");
   }
   if (walls) wall.grow(nmax, hmode != HFIXED);
 }
 
 /* ----------------------------------------------------------------------
    the density sums' start: the self term m_i W(0) of the list's atoms, zero on ghost atoms (with
-   newton, they gather the pairs' other halves); per-atom h: dS/dh likewise
+   newton, they gather the pairs' other halves); per-atom h: the sums of hsum likewise
 ------------------------------------------------------------------------- */
 
 template <int KERNEL, int PERATOM> void PairCellSPH::self_density()
@@ -231,32 +236,34 @@ template <int KERNEL, int PERATOM> void PairCellSPH::self_density()
   const double *rmass = atom->rmass;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
-  const double dim = domain->dimension;
   const double w0 = CellKernel::shape<KERNEL>(0.0);
   const int inum = list->inum;
   const int *ilist = list->ilist;
-  // self term m_i W(0); per-atom h: d(m W(0, h))/dh = -d m W(0, h) / h
+  // self term m_i W(0); per-atom h: m_i f(0) (q = 0: no q^2 f'/q, q^2 f'')
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     if (PERATOM) {
-      rho[i] = rmass[i] * w0 * hscale[i][1];
-      dsum[i] = -dim * rho[i] * hscale[i][0];
+      hsum[i][0] = rmass[i] * w0;
+      hsum[i][1] = hsum[i][2] = 0.0;
     } else {
       rho[i] = rmass[i] * wself[type[i]];
     }
   }
   if (force->newton_pair) {
     const int nall = nlocal + atom->nghost;
-    for (int i = nlocal; i < nall; i++) rho[i] = 0.0;
-    if (PERATOM)
-      for (int i = nlocal; i < nall; i++) dsum[i] = 0.0;
+    for (int i = nlocal; i < nall; i++)
+      if (PERATOM)
+        hsum[i][0] = hsum[i][1] = hsum[i][2] = 0.0;
+      else
+        rho[i] = 0.0;
   }
 }
 
 /* ----------------------------------------------------------------------
    rho_i = sum_j m_j W_ij including j = i, into the custom vector rho of owned (and, with newton,
    ghost) atoms; the pairs inside the support into pairj, pairdw (and pairmu). With per-atom h
-   (PERATOM): W_ij = W(r_ij, h_i) in rho_i, dS/dh into dsum, both kernels' gradients kept.
+   (PERATOM): W_ij = W(r_ij, h_i) in rho_i, the sums of scale_sums() into hsum, the pairs' r_ij
+   and masses kept (the force pass takes the gradients at the converged h).
    first = 0: a Newton iteration of h adaptive, the sums only (no wall boundary)
 ------------------------------------------------------------------------- */
 
@@ -298,7 +305,8 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
     double *pdw = pairdw;
     double *pmu = pairmu;
     pairfirst[ii] = npairs;
-    double rhoi = 0.0, dsumi = 0.0;
+    double sums[3] = {0.0, 0.0, 0.0};    // per-atom h: S_i, dS_i/dh_i, d2S_i/dh_i2
+    double rhoi = 0.0;
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -315,7 +323,9 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
         const double r = sqrt(rsq);
         pairr[npairs] = r;
         pj[npairs] = j;
-        peratom_pair<KERNEL, VISCOUS>(i, j, r, p.mu2, npairs, rhoi, dsumi);
+        pdw[npairs] = mi * rmass[j];
+        if (VISCOUS) pmu[npairs] = 0.5 * p.mu2 * pdw[npairs];
+        peratom_pair<KERNEL>(i, j, r, sums);
         npairs++;
         continue;
       }
@@ -333,8 +343,10 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
       if (VISCOUS) pmu[npairs] = mu;
       npairs++;
     }
-    rho[i] += rhoi;
-    if (PERATOM) dsum[i] += dsumi;
+    if (PERATOM)
+      for (int d = 0; d < 3; d++) hsum[i][d] += sums[d];
+    else
+      rho[i] += rhoi;
   }
   pairfirst[inum] = npairs;
 
@@ -342,38 +354,49 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
 }
 
 /* ----------------------------------------------------------------------
-   per-atom h: pair k (i, j at distance r) into rho_i (here rhoi, dsumi), rho_j and dS/dh, and the
-   pair's kernel gradients at h_i and h_j (zero outside each support)
+   per-atom h: pair (i, j at distance r) into the sums of i (here sums) and of j: m f(q),
+   m q^2 f'(q)/q, m q^2 f''(q) at q = r/h of each atom (zero outside its support)
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int VISCOUS>
-inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k, double &rhoi,
-                                      double &dsumi)
+template <int KERNEL> inline void PairCellSPH::peratom_pair(int i, int j, double r, double *sums)
 {
   const double support = CellKernel::support(KERNEL);
-  const double dim = domain->dimension;
-  const double mi = atom->rmass[i], mj = atom->rmass[j];
   const double qi = r * hscale[i][0], qj = r * hscale[j][0];
-  double dwi = 0.0, dwj = 0.0;
   if (qi < support) {
-    // rho_i += m_j W(r, h_i); dW/dh = -(d W + r dW/dr) / h (doc/pair_cell_sph.md)
-    const double f = CellKernel::shape<KERNEL>(qi), g = CellKernel::slope<KERNEL>(qi);
-    rhoi += mj * hscale[i][1] * f;
-    dsumi -= mj * hscale[i][1] * hscale[i][0] * (dim * f + qi * qi * g);
-    dwi = hscale[i][2] * g;
+    const double m = atom->rmass[j], q2 = qi * qi;
+    sums[0] += m * CellKernel::shape<KERNEL>(qi);
+    sums[1] += m * q2 * CellKernel::slope<KERNEL>(qi);
+    sums[2] += m * q2 * CellKernel::curve<KERNEL>(qi);
   }
-  if (qj < support) {
-    const double f = CellKernel::shape<KERNEL>(qj), g = CellKernel::slope<KERNEL>(qj);
-    if (force->newton_pair || j < atom->nlocal) {
-      atom->dvector[irho][j] += mi * hscale[j][1] * f;
-      dsum[j] -= mi * hscale[j][1] * hscale[j][0] * (dim * f + qj * qj * g);
-    }
-    dwj = hscale[j][2] * g;
+  if (qj < support && (force->newton_pair || j < atom->nlocal)) {
+    const double m = atom->rmass[i], q2 = qj * qj;
+    hsum[j][0] += m * CellKernel::shape<KERNEL>(qj);
+    hsum[j][1] += m * q2 * CellKernel::slope<KERNEL>(qj);
+    hsum[j][2] += m * q2 * CellKernel::curve<KERNEL>(qj);
   }
-  pairdw[k] = mi * mj * dwi;
-  pairdwj[k] = mi * mj * dwj;
-  // viscosity with the mean of the two kernels' gradients (doc/pair_cell_sph.md)
-  if (VISCOUS) pairmu[k] = 0.5 * mu2 * (pairdw[k] + pairdwj[k]);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom h, after the ghosts' sums reached their owners: S = sum_j m_j W(r_ij, h_i) and its
+   derivatives of the owned atoms from their sums A = sum m f, B = sum m q^2 f'/q,
+   C = sum m q^2 f'' (W = sigma/h^d f(q), q = r/h): S = sigma/h^d A, dS/dh = -sigma/h^(d+1)
+   (d A + B), d2S/dh2 = sigma/h^(d+2) (d (d+1) A + 2 (d+1) B + C) (doc/pair_cell_sph.md)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::scale_sums()
+{
+  double *rho = atom->dvector[irho];
+  const double dim = domain->dimension;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double w = hscale[i][1], invh = hscale[i][0];
+    const double a = hsum[i][0], b = hsum[i][1], c = hsum[i][2];
+    rho[i] = w * a;
+    dsum[i] = -(dim * rho[i] + w * b) * invh;
+    d2sum[i] = (dim * (dim + 1.0) * rho[i] + w * (2.0 * (dim + 1.0) * b + c)) * invh * invh;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -381,21 +404,17 @@ inline void PairCellSPH::peratom_pair(int i, int j, double r, double mu2, int k,
    pass: the sums over that pass's pairs, at the new h
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int VISCOUS> void PairCellSPH::resum_density()
+template <int KERNEL> void PairCellSPH::resum_density()
 {
-  double *rho = atom->dvector[irho];
-  const int *type = atom->type;
   const int inum = list->inum;
   const int *ilist = list->ilist;
   self_density<KERNEL, 1>();
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const PairConst *pci = pc[type[i]];
-    double rhoi = 0.0, dsumi = 0.0;
+    double sums[3] = {0.0, 0.0, 0.0};
     for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++)
-      peratom_pair<KERNEL, VISCOUS>(i, pairj[k], pairr[k], pci[type[pairj[k]]].mu2, k, rhoi, dsumi);
-    rho[i] += rhoi;
-    dsum[i] += dsumi;
+      peratom_pair<KERNEL>(i, pairj[k], pairr[k], sums);
+    for (int d = 0; d < 3; d++) hsum[i][d] += sums[d];
   }
 }
 
@@ -406,10 +425,7 @@ void PairCellSPH::grow_pairs(int n)
   maxpairs = n + n / 2;
   memory->grow(pairj, maxpairs, "pair:pairj");
   memory->grow(pairdw, maxpairs, "pair:pairdw");
-  if (hmode != HFIXED) {
-    memory->grow(pairdwj, maxpairs, "pair:pairdwj");
-    memory->grow(pairr, maxpairs, "pair:pairr");
-  }
+  if (hmode != HFIXED) memory->grow(pairr, maxpairs, "pair:pairr");
   memory->grow(pairmu, maxpairs, "pair:pairmu");
 }
 
@@ -516,7 +532,7 @@ void PairCellSPH::apply_eos()
    the energy is the equation-of-state energy of apply_eos()
 ------------------------------------------------------------------------- */
 
-template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
+template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -543,10 +559,8 @@ template <int VISCOUS, int EVFLAG, int PERATOM> void PairCellSPH::sum_forces()
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
-      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4); per-atom h:
-      // -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i W(h_j))
-      const double fpress = PERATOM ? -(pairdw[k] * prho2i + pairdwj[k] * prho2[j])
-                                    : -pairdw[k] * (prho2i + prho2[j]);
+      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4)
+      const double fpress = -pairdw[k] * (prho2i + prho2[j]);
       double fx = delx * fpress;
       double fy = dely * fpress;
       double fz = delz * fpress;
@@ -685,7 +699,7 @@ void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   ghost sums into owners: rho (dS/dh with per-atom h, and the kernel deficit and its dh), the
+   ghost sums into owners: rho (dS/dh and d2S/dh2 with per-atom h, and the kernel deficit and its dh), the
    sums only (an iteration of h adaptive), or the wall load
 ------------------------------------------------------------------------- */
 
@@ -696,8 +710,10 @@ int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
     const double *rho = atom->dvector[irho];
     const int peratom = hmode != HFIXED, deficits = walls && commode == COMM_DENSITY;
     for (int i = first; i < first + n; i++) {
-      buf[m++] = rho[i];
-      if (peratom) buf[m++] = dsum[i];
+      if (peratom)
+        for (int d = 0; d < 3; d++) buf[m++] = hsum[i][d];
+      else
+        buf[m++] = rho[i];
       if (deficits) buf[m++] = wall.deficit[i];
       if (deficits && peratom) buf[m++] = wall.dhdef[i];
     }
@@ -715,8 +731,10 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
     double *rho = atom->dvector[irho];
     const int peratom = hmode != HFIXED, deficits = walls && commode == COMM_DENSITY;
     for (int k = 0; k < n; k++) {
-      rho[list[k]] += buf[m++];
-      if (peratom) dsum[list[k]] += buf[m++];
+      if (peratom)
+        for (int d = 0; d < 3; d++) hsum[list[k]][d] += buf[m++];
+      else
+        rho[list[k]] += buf[m++];
       if (deficits) wall.deficit[list[k]] += buf[m++];
       if (deficits && peratom) wall.dhdef[list[k]] += buf[m++];
     }
@@ -733,7 +751,7 @@ double PairCellSPH::memory_usage()
       maxpairs * (sizeof(int) + 2.0 * sizeof(double));
   if (hmode != HFIXED)
     bytes +=
-        nmax * 4.0 * sizeof(double) + maxpairs * sizeof(double) + step.capacity() * sizeof(double);
+        nmax * 9.0 * sizeof(double) + maxpairs * sizeof(double) + step.capacity() * sizeof(double);
   if (walls) bytes += wall.memory_usage(hmode != HFIXED);
   return bytes;
 }

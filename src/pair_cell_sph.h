@@ -111,10 +111,13 @@ class PairCellSPH : public Pair, public CellWallLoad {
   // per-atom h (h adaptive): custom vectors h and omega (Omega = 1 + h/(3 rho) drho/dh),
   // the kernel constants 1/h, sigma/h^d, sigma/h^(d+2) of each atom, dS/dh of S = sum m W
   int ih, iomega;
-  double *hcap;                // largest h the neighbour cutoff allows, per fluid type
-  double **hscale;             // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
-  double *dsum;                // d(sum_j m_j W(r_ij, h_i))/dh_i
+  double *hcap;       // largest h the neighbour cutoff allows, per fluid type
+  double **hscale;    // 1/h_i, sigma/h_i^d, sigma/h_i^(d+2), (pair range)^2 of every atom
+  double *dsum;       // d(sum_j m_j W(r_ij, h_i))/dh_i
+  double *d2sum;      // d^2(sum_j m_j W(r_ij, h_i))/dh_i^2
+  double **hsum;      // sum_j m_j f, m_j q^2 f'/q, m_j q^2 f'' (q = r_ij/h_i) of dsum, d2sum, rho
   std::vector<double> step;    // h adaptive: Newton step of h of the list's atoms
+  int hstale;    // 1 if owned h changed since the ghosts' h and every hscale were last set
 
   // wall boundary (pair_coeff I J wall): each fluid atom's kernel is completed across its own
   // cell's wall (pair_cell_sph_boundary.h); boundary[i][j] of pair_coeff, walls if any is set
@@ -154,12 +157,12 @@ class PairCellSPH : public Pair, public CellWallLoad {
   int nmax;
 
   // pairs inside the kernel support, found by the density pass and reused by the force pass
-  int *pairfirst;     // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
-  int *pairj;         // neighbour index j
-  double *pairdw;     // m_i m_j (1/r) dW/dr (per-atom h: at h_i)
-  double *pairdwj;    // per-atom h: m_i m_j (1/r) dW/dr at h_j
-  double *pairr;      // per-atom h: r_ij
-  double *pairmu;     // (mu_i + mu_j) m_i m_j (1/r) dW/dr, only with viscosity
+  int *pairfirst;    // pairs of the ii-th atom of the list: pairfirst[ii] .. pairfirst[ii+1]-1
+  int *pairj;        // neighbour index j
+  double *pairdw;    // m_i m_j (1/r) dW/dr; per-atom h: m_i m_j (the gradients in the force pass)
+  double *pairr;     // per-atom h: r_ij
+  double *pairmu;    // (mu_i + mu_j) m_i m_j (1/r) dW/dr; per-atom h: (mu_i + mu_j) m_i m_j / 2;
+                     // only with viscosity
   int maxfirst, maxpairs;
 
   // the density and force passes (pair_cell_sph.cpp)
@@ -168,18 +171,20 @@ class PairCellSPH : public Pair, public CellWallLoad {
   void density_pass(int);
   template <int KERNEL, int PERATOM> void self_density();
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
-  template <int KERNEL, int VISCOUS>
-  void peratom_pair(int, int, double, double, int, double &, double &);
-  template <int KERNEL, int VISCOUS> void resum_density();
+  template <int KERNEL> void peratom_pair(int, int, double, double *);
+  template <int KERNEL> void resum_density();
+  void scale_sums();
   void grow_pairs(int);
   void apply_eos();
   void unstable(int) const;
-  template <int VISCOUS, int EVFLAG, int PERATOM> void sum_forces();
+  template <int VISCOUS, int EVFLAG> void sum_forces();
   // h adaptive (pair_cell_sph_adaptive_h.cpp)
   void atom_h(int &);
   void kernel_scales();
   void solve_h();
-  double newton_h();
+  double newton_h(int &);
+  void forces_h();
+  template <int KERNEL, int VISCOUS, int EVFLAG> void sum_forces_h();
   void too_long(int) const;
   void unsolvable(int, double) const;
   // pair_coeff arrays and the checks of init_style (pair_cell_sph_settings.cpp)

@@ -22,6 +22,11 @@ using namespace LAMMPS_NS;
 // h adaptive: Newton iterations on h stop when every |dh|/h < HTOL; at most HITER of them
 static const double HTOL = 1e-10;
 static const int HITER = 50;
+// a Newton step with every |dh|/h < HTAYLOR updates S, dS/dh by their Taylor series in dh instead
+// of summing them again: the remainders are O((d dh/h)^3) and O((d dh/h)^2) relative
+// (doc/pair_cell_sph.md; on the seed cell, steps of 1e-6: h, rho, Omega as summed again to 4e-16,
+// 1e-15, 2e-13, doc/notes/2026-12-07-speed-against-error.md)
+static const double HTAYLOR = 1e-5;
 
 /* ----------------------------------------------------------------------
    per-atom h of owned and ghost fluid atoms (h adaptive): the last step's h (the start of its
@@ -89,31 +94,34 @@ void PairCellSPH::too_long(int i) const
 
 /* ----------------------------------------------------------------------
    h adaptive: Newton iterations on h_i of owned fluid atoms until rho_i h_i^d = eta^d m_i
-   (doc/pair_cell_sph.md, smoothing length), each followed by the sums at the new h
+   (doc/pair_cell_sph.md, smoothing length), each followed by the sums at the new h: summed again
+   (the ghosts' h first, density_pass), or their Taylor series for small steps (the ghosts' h
+   then follow with the density's forward comm)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::solve_h()
 {
   for (int iter = 0;; iter++) {
-    const double change = newton_h();
+    int taylor = 0;
+    const double change = newton_h(taylor);
     if (change < HTOL) return;
     hdrift += change;
+    hstale = 1;
     if (iter == HITER)
       error->all(FLERR,
                  "Pair cell/sph: h adaptive did not converge in {} Newton iterations on step {}",
                  HITER, update->ntimestep);
-    forward(COMM_H);
-    kernel_scales();
-    density_pass(0);
+    if (!taylor) density_pass(0);
   }
 }
 
 /* ----------------------------------------------------------------------
    one Newton step dh = -h (rho - rho_h) / (d rho Omega), rho_h = eta^d m / h^d, for every owned
-   fluid atom, applied only if some |dh|/h >= HTOL (on any rank); returns that largest |dh|/h
+   fluid atom, applied only if some |dh|/h >= HTOL (on any rank); returns that largest |dh|/h.
+   taylor = 1: the step was small enough that S and dS/dh followed it by their Taylor series
 ------------------------------------------------------------------------- */
 
-double PairCellSPH::newton_h()
+double PairCellSPH::newton_h(int &taylor)
 {
   double *hv = atom->dvector[ih];
   const double *rho = atom->dvector[irho];
@@ -150,12 +158,21 @@ double PairCellSPH::newton_h()
   }
   MPI_Allreduce(&largest, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   if (all < HTOL) return all;
+  // the pairs of the last density pass hold while every h changed by less than HMARGIN
+  taylor = all < HTAYLOR && hdrift + all < HMARGIN;
+  double *sum = atom->dvector[irho];
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     if (!fluid[type[i]]) continue;
-    hv[i] += step[ii];
+    const double dh = step[ii];
+    hv[i] += dh;
+    // S(h + dh) = S + S' dh + S'' dh^2 / 2, S'(h + dh) = S' + S'' dh
+    if (taylor) {
+      sum[i] += (dsum[i] + 0.5 * d2sum[i] * dh) * dh;
+      dsum[i] += d2sum[i] * dh;
+    }
     // the deficit at the new h: linear in h between exact evaluations
-    if (walls) wall.deficit[i] += wall.dhdef[i] * step[ii];
+    if (walls) wall.deficit[i] += wall.dhdef[i] * dh;
     if (hv[i] > hcap[type[i]]) too_long(i);
   }
   return all;
@@ -172,4 +189,89 @@ void PairCellSPH::unsolvable(int i, double omega) const
              "for eta = {})",
              atom->tag[i], atom->molecule ? atom->molecule[i] : 0, atom->x[i][0], atom->x[i][1],
              atom->x[i][2], omega, update->ntimestep, eta);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom h: the force pass, with each pair's kernel gradients at the converged h_i and h_j
+   (the kernel constants of every atom at it first)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::forces_h()
+{
+  if (hstale) kernel_scales();
+  hstale = 0;
+  typedef void (PairCellSPH::*Loop)();
+#define CELLSPH_FORCES(K)                                                       \
+  {                                                                             \
+    {&PairCellSPH::sum_forces_h<K, 0, 0>, &PairCellSPH::sum_forces_h<K, 0, 1>}, \
+    {                                                                           \
+      &PairCellSPH::sum_forces_h<K, 1, 0>, &PairCellSPH::sum_forces_h<K, 1, 1>  \
+    }                                                                           \
+  }
+  static const Loop FORCES[CellKernel::NTYPES][2][2] = {
+      CELLSPH_FORCES(CellKernel::WENDLAND), CELLSPH_FORCES(CellKernel::CUBIC),
+      CELLSPH_FORCES(CellKernel::QUINTIC), CELLSPH_FORCES(CellKernel::LUCY)};
+#undef CELLSPH_FORCES
+  (this->*FORCES[kernel][viscous][evflag ? 1 : 0])();
+}
+
+/* ----------------------------------------------------------------------
+   per-atom h: pressure and viscous forces over the pairs of sum_density()
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces_h()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const double support = CellKernel::support(KERNEL);
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
+    const double vxtmp = v[i][0], vytmp = v[i][1], vztmp = v[i][2];
+    const double prho2i = prho2[i], rhoinvi = rhoinv[i];
+    const double invhi = hscale[i][0], dwi = hscale[i][2];
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+
+    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++) {
+      const int j = pairj[k];
+      const double delx = xtmp - x[j][0];
+      const double dely = ytmp - x[j][1];
+      const double delz = ztmp - x[j][2];
+      // (1/r) dW/dr at h_i and at h_j, zero outside each support
+      const double qi = pairr[k] * invhi, qj = pairr[k] * hscale[j][0];
+      const double gi = qi < support ? dwi * CellKernel::slope<KERNEL>(qi) : 0.0;
+      const double gj = qj < support ? hscale[j][2] * CellKernel::slope<KERNEL>(qj) : 0.0;
+      // F^p_i = -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i
+      // W(h_j)) (doc/pair_cell_sph.md, smoothing length)
+      const double fpress = -pairdw[k] * (gi * prho2i + gj * prho2[j]);
+      double fx = delx * fpress;
+      double fy = dely * fpress;
+      double fz = delz * fpress;
+      if (VISCOUS) {
+        // F^v_i with the mean of the two kernels' gradients (doc/model.md §3.5)
+        const double fvisc = pairmu[k] * (gi + gj) * rhoinvi * rhoinv[j];
+        fx += (vxtmp - v[j][0]) * fvisc;
+        fy += (vytmp - v[j][1]) * fvisc;
+        fz += (vztmp - v[j][2]) * fvisc;
+      }
+      fxi += fx;
+      fyi += fy;
+      fzi += fz;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+      }
+      if (EVFLAG) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    }
+    f[i][0] += fxi;
+    f[i][1] += fyi;
+    f[i][2] += fzi;
+  }
 }

@@ -1,6 +1,7 @@
 // the SPH kernels (src/cell_kernel.h, doc/model.md §3.1): each integrates to 1 in 2 and 3
-// dimensions, (1/r) dW/dr is the derivative of W, W and its slope vanish at the support's edge,
-// and the run-time choice is the compiled one
+// dimensions, (1/r) dW/dr is the derivative of W, the h derivatives of h adaptive from f, f'/q and
+// f'' match finite differences in h, W and its slope vanish at the support's edge, and the
+// run-time choice is the compiled one
 #include "cell_kernel.h"
 
 #include <gtest/gtest.h>
@@ -50,6 +51,44 @@ TEST(Kernel, DerivativeMatchesFiniteDifferences)
         const double fd = (CellKernel::W(k, s, r + dr) - CellKernel::W(k, s, r - dr)) / (2 * dr);
         EXPECT_NEAR(r * CellKernel::dWr(k, s, r), fd, 1e-7 * s.w / h)
             << CellKernel::NAMES[k] << " dim " << dim << " r/h " << r / h;
+      }
+    }
+}
+
+// h adaptive's sums (PairCellSPH::scale_sums): dW/dh = -sigma/h^(d+1) (d f + q^2 f'/q) and
+// d2W/dh2 = sigma/h^(d+2) (d (d+1) f + 2 (d+1) q^2 f'/q + q^2 f'') against central finite
+// differences of W(r, h) in h, inside each piece of the splines and across their joints
+TEST(Kernel, HDerivativesMatchFiniteDifferences)
+{
+  using namespace CellKernel;
+  for (int k = 0; k < NTYPES; k++)
+    for (int dim : {2, 3}) {
+      const double h = 1.3, dh = 1e-4 * h;
+      const Scale s = scale(k, dim, h), sp = scale(k, dim, h + dh), sm = scale(k, dim, h - dh);
+      const double w00 = W(k, s, 0.0);    // the scale of W and its derivatives
+      for (int i = 1; i < 40; i++) {
+        const double r = support(k) * (h - dh) * (i + 0.37) / 40.5, q = r / h;
+        double f = 0.0, g = 0.0, c = 0.0;
+        switch (k) {
+        case CUBIC:
+          f = shape<CUBIC>(q), g = q * q * slope<CUBIC>(q), c = q * q * curve<CUBIC>(q);
+          break;
+        case QUINTIC:
+          f = shape<QUINTIC>(q), g = q * q * slope<QUINTIC>(q), c = q * q * curve<QUINTIC>(q);
+          break;
+        case LUCY:
+          f = shape<LUCY>(q), g = q * q * slope<LUCY>(q), c = q * q * curve<LUCY>(q);
+          break;
+        default:
+          f = shape<WENDLAND>(q), g = q * q * slope<WENDLAND>(q), c = q * q * curve<WENDLAND>(q);
+        }
+        const double d1 = -s.w / h * (dim * f + g);
+        const double d2 = s.w / (h * h) * (dim * (dim + 1.0) * f + 2.0 * (dim + 1.0) * g + c);
+        const double wp = W(k, sp, r), w0 = W(k, s, r), wm = W(k, sm, r);
+        EXPECT_NEAR(d1, (wp - wm) / (2 * dh), 1e-7 * w00 / h)
+            << NAMES[k] << " dim " << dim << " r/h " << q;
+        EXPECT_NEAR(d2, (wp - 2 * w0 + wm) / (dh * dh), 1e-6 * w00 / (h * h))
+            << NAMES[k] << " dim " << dim << " r/h " << q;
       }
     }
 }
