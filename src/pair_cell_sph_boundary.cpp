@@ -1,14 +1,18 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    the wall boundary of pair_style cell/sph, owned by PairCellSPH (pair_cell_sph_boundary.h). The
-   kernel completion 1 - gamma of every fluid atom is evaluated exactly at a neighbour build and
-   every REFRESH to REFRESH_MAX steps, from base positions half an interval ahead, and linearised
-   in the displacements in between (doc/pair_cell_sph.md, cost control).
+   kernel completion 1 - gamma of every fluid atom is evaluated exactly every REFRESH to
+   REFRESH_MAX steps (or when an atom moved REACH x skin from its base), from base positions half
+   an interval ahead, and linearised in the displacements in between (doc/pair_cell_sph.md, cost
+   control). The base goes with each atom (fix FIELDS), so that a neighbour build, a run's setup
+   and a restart evaluate the same linearisation again at it: the state does not depend on how
+   the runs are split.
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_sph_boundary.h"
 
 #include "atom.h"
+#include "cell_styles.h"
 #include "cell_triangle.h"
 #include "cell_wall_triangles.h"
 #include "comm.h"
@@ -16,6 +20,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_cell_sph.h"
@@ -28,11 +33,17 @@ using namespace LAMMPS_NS;
 
 // contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
 static const double CONTACT_H = 2.5;
-// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval) and on
-// reneighbouring, linearised in between in the displacements from a base half an interval ahead
-// (base_positions)
+// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval),
+// linearised in between in the displacements from a base half an interval ahead (base_positions)
 static const int REFRESH = 20;
 static const int REFRESH_MAX = 320;
+// and as soon as an atom is REACH x skin from its base, so that the pairs of a neighbour build
+// include every pair of the base within range (rebase)
+static const double REACH = 0.5;
+// the per-atom fix holding each atom's base (property/atom, no ghosts: theirs are sent shifted)
+static const char *FIELDS = CellField::BASEFIX;
+static const char *XFIELD = CellField::XBASE;
+static const char *HFIELD = CellField::HBASE;
 // the largest jump of 1 - gamma of a fluid atom at an exact evaluation that lets the interval grow
 // (doc/pair_cell_sph.md, cost control: 1e-6 is 20 Pa of pressure at K = 20 MPa)
 static const double JUMP_TOL = 1e-6;
@@ -48,9 +59,9 @@ PairCellSPHBoundary::PairCellSPHBoundary(LAMMPS *lmp, PairCellSPH *owner) :
     Pointers(lmp), deficit(nullptr), dhdef(nullptr), wallload(nullptr), refreshing(1), rebuilt(1),
     every(REFRESH), lastjump(0.0), sph(owner), pairs(nullptr), wallsupport(0.0), phidq(0.0),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
-    deficit0(nullptr), dhdef0(nullptr), hbase(nullptr), xbase(nullptr), gradsum(nullptr),
-    disp(nullptr), jump(nullptr), xnear(nullptr), slot(nullptr), predicted(0), measuring(0),
-    pending(REFRESH), refreshed(-1), nmax(0)
+    deficit0(nullptr), dhdef0(nullptr), hbase(nullptr), xbase(nullptr), ixfield(-1), ihfield(-1),
+    gradsum(nullptr), disp(nullptr), jump(nullptr), xnear(nullptr), slot(nullptr), predicted(0),
+    measuring(0), rebasing(0), pending(REFRESH), refreshed(-1), nmax(0)
 {
 }
 
@@ -122,6 +133,28 @@ void PairCellSPHBoundary::init()
     for (int j = 0; j <= n; j++) pairs[i][j] = Contact{0.0, 0.0, 0.0, 0.0, 0};
   tabulate_phi();
   tris->start_run();
+  find_fields();
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom base xbase (3 values) and hbase in fix FIELDS, made here if no fix has them (after
+   read_restart at the first run: the fix then gets each atom's base from the restart file)
+------------------------------------------------------------------------- */
+
+void PairCellSPHBoundary::find_fields()
+{
+  int flag, cols;
+  if (atom->find_custom(XFIELD, flag, cols) < 0 && modify->find_fix(FIELDS) < 0)
+    modify->add_fix(fmt::format("{} all property/atom d2_{} 3 d_{}", FIELDS, XFIELD, HFIELD));
+  int hflag, hcols;
+  ixfield = atom->find_custom(XFIELD, flag, cols);
+  ihfield = atom->find_custom(HFIELD, hflag, hcols);
+  if (ixfield < 0 || flag != 1 || cols != 3 || ihfield < 0 || hflag != 1 || hcols != 0)
+    error->all(FLERR,
+               "Pair cell/sph: the wall boundary needs the per-atom array {} (3 values) and "
+               "vector {} of fix {} (the pair style makes it; a fix of that ID without them "
+               "conflicts)",
+               XFIELD, HFIELD, FIELDS);
 }
 
 /* ----------------------------------------------------------------------
@@ -179,8 +212,8 @@ void PairCellSPHBoundary::grow(int n, int peratom)
   if (peratom) {
     memory->create(dhdef, nmax, "pair:dhdef");
     memory->create(dhdef0, nmax, "pair:dhdef0");
-    memory->create(hbase, nmax, "pair:hbase");
   }
+  memory->create(hbase, nmax, "pair:hbase");
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
   tris->grow(nmax);
@@ -195,13 +228,17 @@ void PairCellSPHBoundary::grow(int n, int peratom)
 }
 
 /* ----------------------------------------------------------------------
-   a step's start: the triangles at a neighbour build (or after the per-atom arrays grew), and
-   whether this step evaluates the boundary exactly
+   a step's start: the triangles and the base of ghost atoms at a neighbour build (or after the
+   per-atom arrays grew), and whether this step evaluates the boundary exactly at a new base: by
+   the step counter and the interval only (a build or a run's setup evaluates the last base again,
+   rebase), or when an atom moved beyond REACH from its base
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::start_step(bool grown)
 {
   rebuilt = neighbor->ago == 0 || grown;
+  const bigint now = update->ntimestep;
+  const int based = refreshed >= 0 && now >= refreshed;
   if (rebuilt) {
     tris->build();
     // a triangle whose centroid is within the support of f until the next build has its
@@ -209,16 +246,124 @@ void PairCellSPHBoundary::start_step(bool grown)
     // distance grows by < skin (doc/pair_cell_sph.md, Restrictions)
     tris->check_ghost_cutoff("the kernel support", wallsupport, 1, 2);
     sph->forward(PairCellSPH::COMM_TRIANGLES);
+    if (based) restore_base();
   }
-  if (update->setupflag) {
-    every = pending = REFRESH;
-    lastjump = 0.0;
-  }
-  refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
-  measuring = refreshing && !rebuilt;
+  refreshing = !based || now - refreshed >= every || beyond_reach();
+  measuring = refreshing && based;
+  rebasing = rebuilt && based;
   if (refreshing) {
-    refreshed = update->ntimestep;
+    if (!based) every = pending = REFRESH;
+    refreshed = now;
     every = pending;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the schedule of a restart file (or of a pair style before a version that kept it: none)
+------------------------------------------------------------------------- */
+
+void PairCellSPHBoundary::resume(const Schedule &s)
+{
+  refreshed = s.refreshed;
+  every = s.every;
+  pending = s.pending;
+  lastjump = s.lastjump;
+}
+
+/* ----------------------------------------------------------------------
+   at a neighbour build: each owned atom's base from fix FIELDS (its x the image nearest the atom,
+   which the build may have wrapped), the ghost atoms' as their owners' step from the atom
+------------------------------------------------------------------------- */
+
+void PairCellSPHBoundary::restore_base()
+{
+  double **x = atom->x;
+  double **xf = atom->darray[ixfield];
+  const double *hf = atom->dvector[ihfield];
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  for (int i = 0; i < nlocal; i++) {
+    double d[3] = {xf[i][0] - x[i][0], xf[i][1] - x[i][1], xf[i][2] - x[i][2]};
+    const double raw[3] = {d[0], d[1], d[2]};
+    domain->minimum_image(d);
+    if (d[0] != raw[0] || d[1] != raw[1] || d[2] != raw[2])
+      for (int k = 0; k < 3; k++) xf[i][k] = x[i][k] + d[k];
+    for (int k = 0; k < 3; k++) {
+      xbase[i][k] = xf[i][k];
+      disp[i][k] = xf[i][k] - x[i][k];
+    }
+    hbase[i] = hf[i];
+  }
+  sph->forward(PairCellSPH::COMM_BASE);
+  for (int i = nlocal; i < nall; i++)
+    for (int k = 0; k < 3; k++) xbase[i][k] = x[i][k] + disp[i][k];
+}
+
+/* ----------------------------------------------------------------------
+   true (on every rank) if an owned atom has no base or is more than REACH x skin from it
+------------------------------------------------------------------------- */
+
+bool PairCellSPHBoundary::beyond_reach()
+{
+  double **x = atom->x;
+  double **xf = atom->darray[ixfield];
+  const double *hf = atom->dvector[ihfield];
+  const double reach = REACH * neighbor->skin;
+  int out = 0, any = 0;
+  for (int i = 0; i < atom->nlocal && !out; i++) {
+    const double dx = xf[i][0] - x[i][0], dy = xf[i][1] - x[i][1], dz = xf[i][2] - x[i][2];
+    out = !(hf[i] > 0.0) || dx * dx + dy * dy + dz * dz > reach * reach;
+  }
+  MPI_Allreduce(&out, &any, 1, MPI_INT, MPI_MAX, world);
+  return any != 0;
+}
+
+/* ----------------------------------------------------------------------
+   after a neighbour build with a base (also at a run's setup): the linearisation evaluated again
+   at the base positions and h of its last exact evaluation (the same affine function, to
+   round-off, on the atoms' new order and ranks)
+------------------------------------------------------------------------- */
+
+void PairCellSPHBoundary::rebase(int peratom)
+{
+  if (!rebasing) return;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) deficit[i] = 0.0;
+  if (peratom)
+    for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
+  terms.clear();
+  termlen.clear();
+  exact_terms(peratom);
+  keep_base();
+}
+
+/* ----------------------------------------------------------------------
+   at a neighbour build: the fluid atoms and wall triangles that may come into contact before the
+   next build (each atom moves less than skin/2), at the atoms' positions
+------------------------------------------------------------------------- */
+
+void PairCellSPHBoundary::search_contacts()
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const double edgemax = tris->edge_max();
+  touching.clear();
+  for (const auto &fb : boundarypairs) {
+    const int f = fb[0], b = fb[1];
+    const double touch = pairs[type[f]][type[b]].reach + neighbor->skin;
+    const double *xf = x[f];
+    for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
+      const int a = tris->a(t), c = tris->c(t);
+      if (a < 0 || c < 0) continue;
+      // the centroid within touch + 2/3 of the longest edge, the closest point within touch
+      double g[3];
+      for (int d = 0; d < 3; d++) g[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0 - xf[d];
+      const double lim = touch + 2.0 / 3.0 * edgemax;
+      if (CellTriangle::dot(g, g) >= lim * lim) continue;
+      const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
+      const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
+      if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
+    }
   }
 }
 
@@ -231,7 +376,7 @@ void PairCellSPHBoundary::start_step(bool grown)
 void PairCellSPHBoundary::start_pass(int pass)
 {
   if (pass > 0) refreshing = 1, measuring = 0;
-  if (refreshing) base_positions(!rebuilt && pass == 0 && update->whichflag == 1);
+  if (refreshing) base_positions(pass == 0 && update->whichflag == 1);
 }
 
 /* ----------------------------------------------------------------------
@@ -249,15 +394,14 @@ void PairCellSPHBoundary::start_sums(int peratom)
       for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
     terms.clear();
     termlen.clear();
-    if (rebuilt) touching.clear();
   } else {
     linear_deficit();
   }
 }
 
 /* ----------------------------------------------------------------------
-   the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f,
-   the pairs of each f in a row (split_list)
+   the wall boundary, exactly at the base positions: the triangles kept by wall atom b for fluid
+   atom f, the pairs of each f in a row (split_list)
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::exact_terms(int peratom)
@@ -318,8 +462,10 @@ int PairCellSPHBoundary::pack_forward(int mode, int n, int *list, double *buf)
 {
   if (mode == PairCellSPH::COMM_TRIANGLES) return tris->pack(n, list, buf);
   int m = 0;
-  for (int k = 0; k < n; k++)
+  for (int k = 0; k < n; k++) {
     for (int d = 0; d < 3; d++) buf[m++] = disp[list[k]][d];
+    if (mode == PairCellSPH::COMM_BASE) buf[m++] = hbase[list[k]];
+  }
   return m;
 }
 
@@ -330,8 +476,10 @@ void PairCellSPHBoundary::unpack_forward(int mode, int n, int first, double *buf
     return;
   }
   int m = 0;
-  for (int i = first; i < first + n; i++)
+  for (int i = first; i < first + n; i++) {
     for (int d = 0; d < 3; d++) disp[i][d] = buf[m++];
+    if (mode == PairCellSPH::COMM_BASE) hbase[i] = buf[m++];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -365,8 +513,8 @@ void PairCellSPHBoundary::unpack_reverse(int mode, int n, int *list, double *buf
 
 double PairCellSPHBoundary::memory_usage(int peratom)
 {
-  double bytes = peratom ? nmax * 3.0 * sizeof(double) : 0.0;
-  bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
+  double bytes = peratom ? nmax * 2.0 * sizeof(double) : 0.0;
+  bytes += nmax * (15.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
       terms.capacity() * sizeof(Term) + termlen.capacity() * sizeof(double) +
       (touching.capacity() + near.capacity()) * sizeof(touching[0]) +
       fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
@@ -376,8 +524,8 @@ double PairCellSPHBoundary::memory_usage(int peratom)
 
 /* ----------------------------------------------------------------------
    the terms of fluid atom f with the triangles (a, b, c) kept by wall atom b of its own cell:
-   kernel deficit and its gradient, summed per vertex into terms (slot[v]: v's term of f, with
-   |x_v - x_f| in termlen), and at a neighbour build the contact candidates
+   kernel deficit and its gradient at the base, summed per vertex into terms (slot[v]: v's term of
+   f, with |x_v - x_f| in termlen)
 ------------------------------------------------------------------------- */
 
 template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, const Contact &p)
@@ -385,8 +533,6 @@ template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, co
   double **x = xbase;
   const double *xf = x[f];
   const double support = CellKernel::support(sph->kernel);
-  const double touch = p.reach + neighbor->skin;
-  const double edgemax = tris->edge_max();
   for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
     const int a = tris->a(t), c = tris->c(t);
     // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
@@ -397,7 +543,7 @@ template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, co
     const double g[3] = {(ra[0] + rb[0] + rc[0]) / 3.0, (ra[1] + rb[1] + rc[1]) / 3.0,
                          (ra[2] + rb[2] + rc[2]) / 3.0};
     const double gl = sqrt(CellTriangle::dot(g, g));
-    const double invh = PERATOM ? sph->hscale[f][0] : p.invh;
+    const double invh = PERATOM ? 1.0 / hbase[f] : p.invh;
     const double q = gl * invh;
     if (q >= support) continue;
     const int vert[3] = {a, b, c};
@@ -428,12 +574,6 @@ template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, co
     const double co = ph / (4.0 * M_PI);
     for (int v = 0; v < 3; v++)
       for (int d = 0; d < 3; d++) terms[s[v]].grad[d] += cg * g[d] + co * dom[v][d];
-    // contact candidates until the next neighbour build: every atom moves less than skin/2
-    if (rebuilt && gl < touch + 2.0 / 3.0 * edgemax) {
-      const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
-      const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
-      if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
-    }
   }
 }
 
@@ -541,6 +681,7 @@ void PairCellSPHBoundary::base_positions(int ahead)
   if (!predicted) {
     for (int i = 0; i < nall; i++)
       for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
+    store_base();
     return;
   }
   double **v = atom->v;
@@ -554,6 +695,28 @@ void PairCellSPHBoundary::base_positions(int ahead)
   sph->forward(PairCellSPH::COMM_AHEAD);
   for (int i = 0; i < nall; i++)
     for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d] + disp[i][d];
+  store_base();
+}
+
+/* ----------------------------------------------------------------------
+   a new base: h at it (the fluid atoms' own, 1 on other atoms: it marks a base), and that of the
+   owned atoms into fix FIELDS
+------------------------------------------------------------------------- */
+
+void PairCellSPHBoundary::store_base()
+{
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const double *hv = sph->hmode != PairCellSPH::HFIXED ? atom->dvector[sph->ih] : nullptr;
+  for (int i = 0; i < nall; i++)
+    hbase[i] = !sph->fluid[type[i]] ? 1.0 : hv ? hv[i] : sph->h[type[i]][type[i]];
+  double **xf = atom->darray[ixfield];
+  double *hf = atom->dvector[ihfield];
+  for (int i = 0; i < nlocal; i++) {
+    for (int d = 0; d < 3; d++) xf[i][d] = xbase[i][d];
+    hf[i] = hbase[i];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -603,13 +766,8 @@ void PairCellSPHBoundary::keep_base()
   }
   for (const Term &tm : terms)
     for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
-  if (sph->hmode != PairCellSPH::HFIXED) {
-    const double *hv = atom->dvector[sph->ih];
-    for (int i = 0; i < nall; i++) {
-      dhdef0[i] = dhdef[i];
-      hbase[i] = hv[i];
-    }
-  }
+  if (sph->hmode != PairCellSPH::HFIXED)
+    for (int i = 0; i < nall; i++) dhdef0[i] = dhdef[i];
 }
 
 /* ----------------------------------------------------------------------
