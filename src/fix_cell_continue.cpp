@@ -52,6 +52,15 @@ void FixCellContinue::ensure(LAMMPS *lmp)
 
 /* ---------------------------------------------------------------------- */
 
+bool FixCellContinue::setup_continues(LAMMPS *lmp)
+{
+  const int ifix = lmp->modify->find_fix(ID);
+  const auto *fix = ifix < 0 ? nullptr : dynamic_cast<FixCellContinue *>(lmp->modify->fix[ifix]);
+  return fix && fix->swapped;
+}
+
+/* ---------------------------------------------------------------------- */
+
 void FixCellContinue::init()
 {
   int flag, cols;

@@ -29,6 +29,8 @@ class FixCellContinue : public Fix {
 
   // define the fix (ID, style cell/continue) and its fields, unless they exist
   static void ensure(class LAMMPS *);
+  // true during a run's setup that continues the last step (between setup_pre_force and setup)
+  static bool setup_continues(class LAMMPS *);
 
  private:
   int ixforce, ivforce, ivend;    // the per-atom arrays of fix FIELDS

@@ -18,6 +18,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_cell_continue.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -230,15 +231,19 @@ void PairCellSPHBoundary::grow(int n, int peratom)
 /* ----------------------------------------------------------------------
    a step's start: the triangles and the base of ghost atoms at a neighbour build (or after the
    per-atom arrays grew), and whether this step evaluates the boundary exactly at a new base: by
-   the step counter and the interval only (a build or a run's setup evaluates the last base again,
-   rebase), or when an atom moved beyond REACH from its base
+   the step counter and the interval only (a build or a run's setup that continues the last step
+   evaluates the last base again, rebase), when an atom moved beyond REACH from its base, or at a
+   setup that does not continue the last step
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::start_step(bool grown)
 {
   rebuilt = neighbor->ago == 0 || grown;
   const bigint now = update->ntimestep;
-  const int based = refreshed >= 0 && now >= refreshed;
+  // a setup that does not continue the last step (atoms moved or velocities set since, a
+  // minimisation, a first run) starts afresh: exact, the interval at REFRESH
+  const int fresh = update->setupflag && !FixCellContinue::setup_continues(lmp);
+  const int based = refreshed >= 0 && now >= refreshed && !fresh;
   if (rebuilt) {
     tris->build();
     // a triangle whose centroid is within the support of f until the next build has its
@@ -252,7 +257,7 @@ void PairCellSPHBoundary::start_step(bool grown)
   measuring = refreshing && based;
   rebasing = rebuilt && based;
   if (refreshing) {
-    if (!based) every = pending = REFRESH;
+    if (!based) every = pending = REFRESH, lastjump = 0.0;
     refreshed = now;
     every = pending;
   }
