@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 8's uniform fluid (doc/pair_cell_sph.md, "Uniformity with h adaptive"): sealed cells at
+# The uniform fluid (doc/pair_cell_sph.md, "Uniformity with h adaptive"): sealed cells at
 # rest with the SPH wall boundary and h adaptive (bench/accuracy/wall_boundary.lmp), each VARIANT at each
 # CASE; prints one table row per run: the stretch, P_SPH / P_wall - 1, P_wall / law - 1, std/mean
 # of P over all fluid atoms, its split into between-shell and within-shell parts, the worst shell
