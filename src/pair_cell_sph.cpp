@@ -108,11 +108,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  if (walls && wall.rebuilt) {
-    wall.split_list(neighbor->skin);
-    wall.search_contacts();
-    wall.rebase(peratom);
-  }
+  if (walls && wall.rebuilt) wall.split_list(neighbor->skin);
   for (int pass = 0; pass < passes; pass++) {
     if (walls) wall.start_pass(pass);
     density_pass(1);
@@ -652,7 +648,7 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD || commode == COMM_BASE)
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD)
     return wall.pack_forward(commode, n, list, buf);
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
@@ -679,7 +675,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD || commode == COMM_BASE) {
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD) {
     wall.unpack_forward(commode, n, first, buf);
     return;
   }

@@ -135,7 +135,6 @@ class PairCellSPH : public Pair, public CellWallLoad {
     COMM_LOAD,
     COMM_TRIANGLES,
     COMM_AHEAD,
-    COMM_BASE,
     COMM_JUMP
   } commode;
   void forward(int);      // a forward comm of this kind
@@ -150,8 +149,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
     double grow = 1.5;       // grow (ignored: the neighbour range only)
     double lag = -1.0;       // background auto lag (s); < 0: not given
   };
-  void read_settings(FILE *, Removed &, std::string &, std::string &, double &,
-                     PairCellSPHBoundary::Schedule &);
+  void read_settings(FILE *, Removed &, std::string &, std::string &, double &);
   const char *removed_setting(const Removed &) const;
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
