@@ -172,11 +172,13 @@ bool measure(const double *tri, const tagint *ids, int ntri, const double *p, co
   // attained with a hull edge on one jaw
   const std::vector<double> hull = convex_hull(points);
   const int h = (int) hull.size() / 2;
-  double hull2 = 0.0, feret2 = 0.0, minwidth = INFINITY;
+  double hull2 = 0.0, hullp = 0.0, feret2 = 0.0, minwidth = INFINITY;
   for (int i = 0; i < h; i++) {
     const double *q = &hull[2 * i], *r = &hull[2 * ((i + 1) % h)];
     hull2 += q[0] * r[1] - r[0] * q[1];
     const double len = std::hypot(r[0] - q[0], r[1] - q[1]);
+    // hull perimeter: the sum of its edges' lengths (doc/compute_cell_shape.md, column 17)
+    hullp += len;
     double width = 0.0;
     for (int j = 0; j < h; j++) {
       const double *w = &hull[2 * j];
@@ -186,6 +188,7 @@ bool measure(const double *tri, const tagint *ids, int ntri, const double *p, co
     if (len > 0.0) minwidth = std::min(minwidth, width);
   }
   shape.convex_area = 0.5 * hull2;
+  shape.convex_perimeter = hullp;
   shape.feret = std::sqrt(feret2);
   shape.minferet = std::isfinite(minwidth) ? minwidth : 0.0;
   return true;
