@@ -108,7 +108,11 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  if (walls && wall.rebuilt) wall.split_list(neighbor->skin);
+  if (walls && wall.rebuilt) {
+    wall.split_list(neighbor->skin);
+    wall.search_contacts();
+    wall.rebase(peratom);
+  }
   for (int pass = 0; pass < passes; pass++) {
     if (walls) wall.start_pass(pass);
     density_pass(1);
@@ -648,7 +652,7 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD)
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD || commode == COMM_BASE)
     return wall.pack_forward(commode, n, list, buf);
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
@@ -675,7 +679,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD) {
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD || commode == COMM_BASE) {
     wall.unpack_forward(commode, n, first, buf);
     return;
   }

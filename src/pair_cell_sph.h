@@ -135,6 +135,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
     COMM_LOAD,
     COMM_TRIANGLES,
     COMM_AHEAD,
+    COMM_BASE,
     COMM_JUMP
   } commode;
   void forward(int);      // a forward comm of this kind
@@ -149,7 +150,8 @@ class PairCellSPH : public Pair, public CellWallLoad {
     double grow = 1.5;       // grow (ignored: the neighbour range only)
     double lag = -1.0;       // background auto lag (s); < 0: not given
   };
-  void read_settings(FILE *, Removed &, std::string &, std::string &, double &);
+  void read_settings(FILE *, Removed &, std::string &, std::string &, double &,
+                     PairCellSPHBoundary::Schedule &);
   const char *removed_setting(const Removed &) const;
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
