@@ -48,6 +48,8 @@ void FixCellContinue::ensure(LAMMPS *lmp)
     modify->add_fix(
         fmt::format("{} all property/atom d2_{} 3 d2_{} 3 d2_{} 3", FIELDS, XFORCE, VFORCE, VEND));
   if (modify->find_fix(ID) < 0) modify->add_fix(fmt::format("{} all cell/continue", ID));
+  // internal: no section in data files (an input reading them does not define the fix)
+  lmp->modify->fix[modify->find_fix(FIELDS)]->wd_section = 0;
 }
 
 /* ---------------------------------------------------------------------- */

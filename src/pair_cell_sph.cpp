@@ -114,6 +114,9 @@ void PairCellSPH::compute(int eflag, int vflag)
     wall.rebase(peratom);
   }
   for (int pass = 0; pass < passes; pass++) {
+    // a new base of the wall boundary takes the ghosts' h (store_base): theirs at the last
+    // iteration's h
+    ghost_h();
     if (walls) wall.start_pass(pass);
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
@@ -153,6 +156,18 @@ void PairCellSPH::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
+   h adaptive: the ghosts' h and every atom's kernel constants at the h of the last iteration
+------------------------------------------------------------------------- */
+
+void PairCellSPH::ghost_h()
+{
+  if (!hstale) return;
+  forward(COMM_H);
+  kernel_scales();
+  hstale = 0;
+}
+
+/* ----------------------------------------------------------------------
    one density pass with the loop compiled for this kernel, with or without wall boundary,
    viscosity and per-atom h; first = 1: the step's first pass (with the wall boundary), 0: a
    Newton iteration of h adaptive (the sums only); then the ghost sums into owners
@@ -160,12 +175,7 @@ void PairCellSPH::compute(int eflag, int vflag)
 
 void PairCellSPH::density_pass(int first)
 {
-  // h adaptive: the ghosts' h and every atom's kernel constants at the h of the last iteration
-  if (hstale) {
-    forward(COMM_H);
-    kernel_scales();
-    hstale = 0;
-  }
+  ghost_h();
   // per-atom h grown beyond the split's allowance: split again (split_list)
   if (walls && hmode != HFIXED && wall.outgrown()) wall.split_list(2.0 * neighbor->skin);
   typedef void (PairCellSPH::*Loop)(int);

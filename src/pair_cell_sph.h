@@ -171,6 +171,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
   void grow_peratom();
   void destroy_peratom();
   void density_pass(int);
+  void ghost_h();    // h adaptive: the ghosts' h sent again if owned h changed since
   template <int KERNEL, int PERATOM> void self_density();
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
   template <int KERNEL> void peratom_pair(int, int, double, double *);

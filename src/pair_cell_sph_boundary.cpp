@@ -54,7 +54,7 @@ PairCellSPHBoundary::PairCellSPHBoundary(LAMMPS *lmp, PairCellSPH *owner) :
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
     deficit0(nullptr), dhdef0(nullptr), hbase(nullptr), xbase(nullptr), ixfield(-1), ihfield(-1),
     gradsum(nullptr), disp(nullptr), jump(nullptr), xnear(nullptr), slot(nullptr), predicted(0),
-    measuring(0), rebasing(0), pending(REFRESH), refreshed(-1), nmax(0)
+    measuring(0), rebasing(0), reached(0), pending(REFRESH), refreshed(-1), nmax(0)
 {
 }
 
@@ -224,7 +224,10 @@ void PairCellSPHBoundary::start_step(bool grown)
     sph->forward(PairCellSPH::COMM_TRIANGLES);
     if (based) restore_base();
   }
-  refreshing = !based || now - refreshed >= every || beyond_reach();
+  // an atom beyond reach of its base moves too fast for the base ahead (base_positions): the
+  // new base at the atoms, as a neighbour build took it before the base went with each atom
+  reached = based && beyond_reach();
+  refreshing = !based || now - refreshed >= every || reached;
   measuring = refreshing && based;
   rebasing = rebuilt && based;
   if (refreshing) {
@@ -237,13 +240,13 @@ void PairCellSPHBoundary::start_step(bool grown)
 /* ----------------------------------------------------------------------
    before density pass number pass of a step: a pass after the first evaluates exactly again (at
    the converged h of h adaptive); the base ahead in dynamics only (a minimisation's velocities
-   are not its motion)
+   are not its motion) and not after an atom went beyond reach
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::start_pass(int pass)
 {
   if (pass > 0) refreshing = 1, measuring = 0;
-  if (refreshing) base_positions(pass == 0 && update->whichflag == 1);
+  if (refreshing) base_positions(pass == 0 && update->whichflag == 1 && !reached);
 }
 
 /* ----------------------------------------------------------------------

@@ -116,6 +116,7 @@ class PairCellSPHBoundary : protected Pointers {
   int predicted;                 // 1 if the last exact evaluation's base is ahead of the atoms
   int measuring;                 // 1 if this exact evaluation measures the jump (next_interval)
   int rebasing;                  // 1 at a build with a base: the linearisation evaluated again
+  int reached;                   // 1 if an owned atom is beyond reach of its base (beyond_reach)
   int pending;                   // steps from the next exact evaluation to the one after
   bigint refreshed;              // step of the last exact evaluation
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact

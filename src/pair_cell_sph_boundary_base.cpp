@@ -15,6 +15,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "pair_cell_sph.h"
@@ -39,6 +40,10 @@ void PairCellSPHBoundary::find_fields()
   int flag, cols;
   if (atom->find_custom(XFIELD, flag, cols) < 0 && modify->find_fix(FIELDS) < 0)
     modify->add_fix(fmt::format("{} all property/atom d2_{} 3 d_{}", FIELDS, XFIELD, HFIELD));
+  // internal: no section in data files (an input reading them does not define the fix); restart
+  // files carry the base
+  const int ifix = modify->find_fix(FIELDS);
+  if (ifix >= 0) modify->fix[ifix]->wd_section = 0;
   int hflag, hcols;
   ixfield = atom->find_custom(XFIELD, flag, cols);
   ihfield = atom->find_custom(HFIELD, hflag, hcols);
