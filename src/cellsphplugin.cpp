@@ -12,6 +12,7 @@
 
 #include "bond_cell_lamella.h"
 #include "bond_cell_neohookean.h"
+#include "cell_atoms.h"
 #include "compute_cell_props.h"
 #include "compute_cell_shape.h"
 #include "dihedral_cell_bending.h"
@@ -45,10 +46,10 @@ template <class Style> void *create_v2(void *lmp, int narg, char **arg)
 }
 
 struct StyleEntry {
-  const char *kind;    // pair, bond, dihedral, fix, compute
+  const char *kind;    // pair, bond, dihedral, fix, compute, command
   const char *name;
   const char *info;
-  lammpsplugin_factory1 *v1;    // pair, bond and dihedral styles
+  lammpsplugin_factory1 *v1;    // pair, bond and dihedral styles, commands
   lammpsplugin_factory2 *v2;    // fix and compute styles
 };
 
@@ -59,6 +60,8 @@ const StyleEntry STYLES[] = {
      &create_v1<DihedralCellBending>, nullptr},
     {"bond", "cell/lamella", "middle lamella: breakable junction between the walls of two cells",
      &create_v1<BondCellLamella>, nullptr},
+    {"command", "cell/atoms", "defines the per-atom fields of a cellsph data file (fix cellatoms)",
+     &create_v1<CellAtoms>, nullptr},
     {"fix", "cell/bond/history", "per-bond reference state of cellsph bond styles (internal)",
      nullptr, &create_v2<FixCellBondHistory>},
     {"fix", "cell/continue",

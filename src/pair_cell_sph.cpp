@@ -142,14 +142,7 @@ void PairCellSPH::compute(int eflag, int vflag)
       if (peratom) prho2[i] /= omega[i];
     }
 
-  typedef void (PairCellSPH::*Loop)();
-  static const Loop FORCES[2][2] = {
-      {&PairCellSPH::sum_forces<0, 0>, &PairCellSPH::sum_forces<0, 1>},
-      {&PairCellSPH::sum_forces<1, 0>, &PairCellSPH::sum_forces<1, 1>}};
-  if (peratom)
-    forces_h();
-  else
-    (this->*FORCES[viscous][evflag ? 1 : 0])();
+  forces(peratom);
   if (walls) wall.forces(evflag);
 
   if (vflag_fdotr) virial_fdotr_compute();
@@ -543,14 +536,17 @@ void PairCellSPH::apply_eos()
 
 /* ----------------------------------------------------------------------
    pressure and viscous forces over the pairs of sum_density(); the virial is tallied per pair,
-   the energy is the equation-of-state energy of apply_eos()
+   the energy is the equation-of-state energy of apply_eos(). KERNEL = FIXED_H: one h per type
+   pair, the gradients stored with the pairs; a kernel: each atom's own h (pair_cell_sph_adaptive_h.cpp)
 ------------------------------------------------------------------------- */
 
-template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
+template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
 {
+  constexpr bool PERATOM = KERNEL != FIXED_H;
   double **x = atom->x;
   double **v = atom->v;
   double **f = atom->f;
+  const double support = PERATOM ? CellKernel::support(KERNEL) : 0.0;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int inum = list->inum;
@@ -558,14 +554,10 @@ template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const double xtmp = x[i][0];
-    const double ytmp = x[i][1];
-    const double ztmp = x[i][2];
-    const double vxtmp = v[i][0];
-    const double vytmp = v[i][1];
-    const double vztmp = v[i][2];
-    const double prho2i = prho2[i];
-    const double rhoinvi = rhoinv[i];
+    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
+    const double vxtmp = v[i][0], vytmp = v[i][1], vztmp = v[i][2];
+    const double prho2i = prho2[i], rhoinvi = rhoinv[i];
+    const double invhi = PERATOM ? hscale[i][0] : 0.0, dwi = PERATOM ? hscale[i][2] : 0.0;
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
 
     for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++) {
@@ -573,19 +565,32 @@ template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
-      // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4)
-      const double fpress = -pairdw[k] * (prho2i + prho2[j]);
+      double fpress, gsum = 1.0;
+      if constexpr (PERATOM) {
+        // (1/r) dW/dr at h_i and at h_j, zero outside each support
+        const double qi = pairr[k] * invhi, qj = pairr[k] * hscale[j][0];
+        const double gi = qi < support ? dwi * CellKernel::slope<KERNEL>(qi) : 0.0;
+        const double gj = qj < support ? hscale[j][2] * CellKernel::slope<KERNEL>(qj) : 0.0;
+        // F^p_i = -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i
+        // W(h_j)) (doc/pair_cell_sph.md, smoothing length)
+        fpress = -pairdw[k] * (gi * prho2i + gj * prho2[j]);
+        gsum = gi + gj;
+      } else {
+        // F^p_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij (doc/model.md §3.4)
+        fpress = -pairdw[k] * (prho2i + prho2[j]);
+      }
       double fx = delx * fpress;
       double fy = dely * fpress;
       double fz = delz * fpress;
       if (VISCOUS) {
-        // F^v_i = m_i m_j (mu_i + mu_j) v_ij / (rho_i rho_j) (1/r) dW/dr (doc/model.md §3.5)
-        const double fvisc = pairmu[k] * rhoinvi * rhoinv[j];
+        // F^v_i = m_i m_j (mu_i + mu_j) v_ij / (rho_i rho_j) (1/r) dW/dr (doc/model.md §3.5), per-atom
+        // h with the mean of the two kernels' gradients
+        const double fvisc =
+            PERATOM ? pairmu[k] * gsum * rhoinvi * rhoinv[j] : pairmu[k] * rhoinvi * rhoinv[j];
         fx += (vxtmp - v[j][0]) * fvisc;
         fy += (vytmp - v[j][1]) * fvisc;
         fz += (vztmp - v[j][2]) * fvisc;
       }
-
       fxi += fx;
       fyi += fy;
       fzi += fz;
@@ -600,6 +605,30 @@ template <int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
     f[i][1] += fyi;
     f[i][2] += fzi;
   }
+}
+
+/* ----------------------------------------------------------------------
+   the force pass: per-atom h with the kernel constants of every atom at the converged h first
+------------------------------------------------------------------------- */
+
+void PairCellSPH::forces(int peratom)
+{
+  if (peratom && hstale) kernel_scales();
+  if (peratom) hstale = 0;
+  typedef void (PairCellSPH::*Loop)();
+#define CELLSPH_FORCES(K)                                                   \
+  {                                                                         \
+    {&PairCellSPH::sum_forces<K, 0, 0>, &PairCellSPH::sum_forces<K, 0, 1>}, \
+    {                                                                       \
+      &PairCellSPH::sum_forces<K, 1, 0>, &PairCellSPH::sum_forces<K, 1, 1>  \
+    }                                                                       \
+  }
+  static const Loop FORCES[CellKernel::NTYPES + 1][2][2] = {
+      CELLSPH_FORCES(FIXED_H), CELLSPH_FORCES(CellKernel::WENDLAND),
+      CELLSPH_FORCES(CellKernel::CUBIC), CELLSPH_FORCES(CellKernel::QUINTIC),
+      CELLSPH_FORCES(CellKernel::LUCY)};
+#undef CELLSPH_FORCES
+  (this->*FORCES[peratom ? kernel + 1 : 0][viscous][evflag ? 1 : 0])();
 }
 
 /* ----------------------------------------------------------------------

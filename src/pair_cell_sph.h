@@ -180,14 +180,14 @@ class PairCellSPH : public Pair, public CellWallLoad {
   void grow_pairs(int);
   void apply_eos();
   void unstable(int) const;
-  template <int VISCOUS, int EVFLAG> void sum_forces();
+  static constexpr int FIXED_H = -1;    // sum_forces with one h per type pair
+  template <int KERNEL, int VISCOUS, int EVFLAG> void sum_forces();
+  void forces(int);
   // h adaptive (pair_cell_sph_adaptive_h.cpp)
   void atom_h(int &);
   void kernel_scales();
   void solve_h();
   double newton_h(int &);
-  void forces_h();
-  template <int KERNEL, int VISCOUS, int EVFLAG> void sum_forces_h();
   void too_long(int) const;
   void unsolvable(int, double) const;
   // pair_coeff arrays and the checks of init_style (pair_cell_sph_settings.cpp)
