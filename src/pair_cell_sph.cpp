@@ -295,6 +295,9 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
   }
   self_density<KERNEL, PERATOM>();
   if (WALLS && first) wall.start_sums(PERATOM);
+  // per-atom h: rows of hscale (4 values) and hsum (3) as flat arrays (memory->create: contiguous)
+  const double *hs = PERATOM ? hscale[0] : nullptr;
+  double *hsm = PERATOM ? hsum[0] : nullptr;
 
   int npairs = 0;
   for (int ii = 0; ii < inum; ii++) {
@@ -326,13 +329,14 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
 
       if (PERATOM) {
         // the pairs within (1 + HMARGIN) x the support of h_i or h_j
-        if (rsq >= hscale[i][3] && rsq >= hscale[j][3]) continue;
+        if (rsq >= hs[4 * i + 3] && rsq >= hs[4 * j + 3]) continue;
         const double r = sqrt(rsq);
         pairr[npairs] = r;
         pj[npairs] = j;
         pdw[npairs] = mi * rmass[j];
         if (VISCOUS) pmu[npairs] = 0.5 * p.mu2 * pdw[npairs];
-        peratom_pair<KERNEL>(i, j, r, sums);
+        peratom_pair<KERNEL>(r * hs[4 * i], r * hs[4 * j], mi, rmass[j], sums,
+                             newton_pair || j < nlocal ? hsm + 3 * j : nullptr);
         npairs++;
         continue;
       }
@@ -361,25 +365,27 @@ template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void PairCellSPH::sum
 }
 
 /* ----------------------------------------------------------------------
-   per-atom h: pair (i, j at distance r) into the sums of i (here sums) and of j: m f(q),
-   m q^2 f'(q)/q, m q^2 f''(q) at q = r/h of each atom (zero outside its support)
+   per-atom h: pair (i, j at q_i = r/h_i, q_j = r/h_j; masses m_i, m_j) into the sums of i (sums)
+   and of j (sumj, null if j's sums are not kept here): m f(q), m q^2 f'(q)/q, m q^2 f''(q) at each
+   atom's q (zero outside its support)
 ------------------------------------------------------------------------- */
 
-template <int KERNEL> inline void PairCellSPH::peratom_pair(int i, int j, double r, double *sums)
+template <int KERNEL>
+inline void PairCellSPH::peratom_pair(double qi, double qj, double mi, double mj, double *sums,
+                                      double *sumj)
 {
   const double support = CellKernel::support(KERNEL);
-  const double qi = r * hscale[i][0], qj = r * hscale[j][0];
   if (qi < support) {
-    const double m = atom->rmass[j], q2 = qi * qi;
-    sums[0] += m * CellKernel::shape<KERNEL>(qi);
-    sums[1] += m * q2 * CellKernel::slope<KERNEL>(qi);
-    sums[2] += m * q2 * CellKernel::curve<KERNEL>(qi);
+    const double q2 = qi * qi;
+    sums[0] += mj * CellKernel::shape<KERNEL>(qi);
+    sums[1] += mj * q2 * CellKernel::slope<KERNEL>(qi);
+    sums[2] += mj * q2 * CellKernel::curve<KERNEL>(qi);
   }
-  if (qj < support && (force->newton_pair || j < atom->nlocal)) {
-    const double m = atom->rmass[i], q2 = qj * qj;
-    hsum[j][0] += m * CellKernel::shape<KERNEL>(qj);
-    hsum[j][1] += m * q2 * CellKernel::slope<KERNEL>(qj);
-    hsum[j][2] += m * q2 * CellKernel::curve<KERNEL>(qj);
+  if (qj < support && sumj) {
+    const double q2 = qj * qj;
+    sumj[0] += mi * CellKernel::shape<KERNEL>(qj);
+    sumj[1] += mi * q2 * CellKernel::slope<KERNEL>(qj);
+    sumj[2] += mi * q2 * CellKernel::curve<KERNEL>(qj);
   }
 }
 
@@ -415,12 +421,20 @@ template <int KERNEL> void PairCellSPH::resum_density()
 {
   const int inum = list->inum;
   const int *ilist = list->ilist;
+  const double *rmass = atom->rmass;
+  const double *hs = hscale[0];
+  double *hsm = hsum[0];
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
   self_density<KERNEL, 1>();
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     double sums[3] = {0.0, 0.0, 0.0};
-    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++)
-      peratom_pair<KERNEL>(i, pairj[k], pairr[k], sums);
+    for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++) {
+      const int j = pairj[k];
+      peratom_pair<KERNEL>(pairr[k] * hs[4 * i], pairr[k] * hs[4 * j], rmass[i], rmass[j], sums,
+                           newton_pair || j < nlocal ? hsm + 3 * j : nullptr);
+    }
     for (int d = 0; d < 3; d++) hsum[i][d] += sums[d];
   }
 }
@@ -547,6 +561,7 @@ template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
   double **v = atom->v;
   double **f = atom->f;
   const double support = PERATOM ? CellKernel::support(KERNEL) : 0.0;
+  const double *hs = PERATOM ? hscale[0] : nullptr;    // rows of 4, contiguous
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int inum = list->inum;
@@ -557,7 +572,7 @@ template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
     const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
     const double vxtmp = v[i][0], vytmp = v[i][1], vztmp = v[i][2];
     const double prho2i = prho2[i], rhoinvi = rhoinv[i];
-    const double invhi = PERATOM ? hscale[i][0] : 0.0, dwi = PERATOM ? hscale[i][2] : 0.0;
+    const double invhi = PERATOM ? hs[4 * i] : 0.0, dwi = PERATOM ? hs[4 * i + 2] : 0.0;
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
 
     for (int k = pairfirst[ii]; k < pairfirst[ii + 1]; k++) {
@@ -568,9 +583,9 @@ template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
       double fpress, gsum = 1.0;
       if constexpr (PERATOM) {
         // (1/r) dW/dr at h_i and at h_j, zero outside each support
-        const double qi = pairr[k] * invhi, qj = pairr[k] * hscale[j][0];
+        const double qi = pairr[k] * invhi, qj = pairr[k] * hs[4 * j];
         const double gi = qi < support ? dwi * CellKernel::slope<KERNEL>(qi) : 0.0;
-        const double gj = qj < support ? hscale[j][2] * CellKernel::slope<KERNEL>(qj) : 0.0;
+        const double gj = qj < support ? hs[4 * j + 2] * CellKernel::slope<KERNEL>(qj) : 0.0;
         // F^p_i = -m_i m_j (P_i/(Omega_i rho_i^2) grad_i W(h_i) + P_j/(Omega_j rho_j^2) grad_i
         // W(h_j)) (doc/pair_cell_sph.md, smoothing length)
         fpress = -pairdw[k] * (gi * prho2i + gj * prho2[j]);

@@ -174,7 +174,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
   void ghost_h();    // h adaptive: the ghosts' h sent again if owned h changed since
   template <int KERNEL, int PERATOM> void self_density();
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
-  template <int KERNEL> void peratom_pair(int, int, double, double *);
+  template <int KERNEL> void peratom_pair(double, double, double, double, double *, double *);
   template <int KERNEL> void resum_density();
   void scale_sums();
   void grow_pairs(int);
