@@ -34,6 +34,52 @@ double turn(const double *a, const double *b, const double *c)
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
 }
 
+// the ellipse of ImageJ's "Fit ellipse" from Green's sums over the section's curves (2 A, 6 A (cu, cv),
+// 12 (Iuu, Ivv), 24 Iuv): its axis ratio from the central second moments, its size from the area
+void fit_ellipse(double a2, double su, double sv, double suu, double svv, double suv,
+                 CellSection::Shape &shape)
+{
+  if (!(shape.area > 0.0)) return;
+  // central second moments per area; the axis ratio from their eigenvalues, the size from the
+  // area: major minor pi / 4 = A
+  const double cu = su / (3.0 * a2), cv = sv / (3.0 * a2);
+  const double muu = suu / (6.0 * a2) - cu * cu, mvv = svv / (6.0 * a2) - cv * cv;
+  const double muv = suv / (12.0 * a2) - cu * cv;
+  const double mean = 0.5 * (muu + mvv), dev = std::hypot(0.5 * (muu - mvv), muv);
+  const double l1 = mean + dev, l2 = mean - dev;
+  if (l2 > 0.0) {
+    const double ratio = std::sqrt(l1 / l2);
+    shape.major = std::sqrt(4.0 * shape.area * ratio / LAMMPS_NS::MathConst::MY_PI);
+    shape.minor = std::sqrt(4.0 * shape.area / (ratio * LAMMPS_NS::MathConst::MY_PI));
+  }
+}
+
+// calipers of the convex hull (counter-clockwise x y pairs), with its area and perimeter: the
+// largest width is the longest vertex pair, the smallest is attained with a hull edge on one jaw
+void calipers(const std::vector<double> &hull, CellSection::Shape &shape)
+{
+  const int h = (int) hull.size() / 2;
+  double hull2 = 0.0, hullp = 0.0, feret2 = 0.0, minwidth = INFINITY;
+  for (int i = 0; i < h; i++) {
+    const double *q = &hull[2 * i], *r = &hull[2 * ((i + 1) % h)];
+    hull2 += q[0] * r[1] - r[0] * q[1];
+    const double len = std::hypot(r[0] - q[0], r[1] - q[1]);
+    // hull perimeter: the sum of its edges' lengths (doc/compute_cell_shape.md, column 17)
+    hullp += len;
+    double width = 0.0;
+    for (int j = 0; j < h; j++) {
+      const double *w = &hull[2 * j];
+      feret2 = std::max(feret2, (w[0] - q[0]) * (w[0] - q[0]) + (w[1] - q[1]) * (w[1] - q[1]));
+      if (len > 0.0) width = std::max(width, turn(q, r, w) / len);
+    }
+    if (len > 0.0) minwidth = std::min(minwidth, width);
+  }
+  shape.convex_area = 0.5 * hull2;
+  shape.convex_perimeter = hullp;
+  shape.feret = std::sqrt(feret2);
+  shape.minferet = std::isfinite(minwidth) ? minwidth : 0.0;
+}
+
 }    // namespace
 
 namespace CellSection {
@@ -153,41 +199,8 @@ bool measure(const double *tri, const tagint *ids, int ntri, const double *p, co
   }
 
   shape.area = 0.5 * a2;
-  if (shape.area > 0.0) {
-    // central second moments per area; the ellipse of ImageJ's "Fit ellipse" takes its axis ratio
-    // from their eigenvalues and its size from the area: major minor pi / 4 = A
-    const double cu = su / (3.0 * a2), cv = sv / (3.0 * a2);
-    const double muu = suu / (6.0 * a2) - cu * cu, mvv = svv / (6.0 * a2) - cv * cv;
-    const double muv = suv / (12.0 * a2) - cu * cv;
-    const double mean = 0.5 * (muu + mvv), dev = std::hypot(0.5 * (muu - mvv), muv);
-    const double l1 = mean + dev, l2 = mean - dev;
-    if (l2 > 0.0) {
-      const double ratio = std::sqrt(l1 / l2);
-      shape.major = std::sqrt(4.0 * shape.area * ratio / LAMMPS_NS::MathConst::MY_PI);
-      shape.minor = std::sqrt(4.0 * shape.area / (ratio * LAMMPS_NS::MathConst::MY_PI));
-    }
-  }
-
-  // calipers of the convex hull: the largest width is the longest vertex pair, the smallest is
-  // attained with a hull edge on one jaw
-  const std::vector<double> hull = convex_hull(points);
-  const int h = (int) hull.size() / 2;
-  double hull2 = 0.0, feret2 = 0.0, minwidth = INFINITY;
-  for (int i = 0; i < h; i++) {
-    const double *q = &hull[2 * i], *r = &hull[2 * ((i + 1) % h)];
-    hull2 += q[0] * r[1] - r[0] * q[1];
-    const double len = std::hypot(r[0] - q[0], r[1] - q[1]);
-    double width = 0.0;
-    for (int j = 0; j < h; j++) {
-      const double *w = &hull[2 * j];
-      feret2 = std::max(feret2, (w[0] - q[0]) * (w[0] - q[0]) + (w[1] - q[1]) * (w[1] - q[1]));
-      if (len > 0.0) width = std::max(width, turn(q, r, w) / len);
-    }
-    if (len > 0.0) minwidth = std::min(minwidth, width);
-  }
-  shape.convex_area = 0.5 * hull2;
-  shape.feret = std::sqrt(feret2);
-  shape.minferet = std::isfinite(minwidth) ? minwidth : 0.0;
+  fit_ellipse(a2, su, sv, suu, svv, suv, shape);
+  calipers(convex_hull(points), shape);
   return true;
 }
 

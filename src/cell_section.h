@@ -23,7 +23,8 @@ struct Shape {
   double minferet = 0.0;     // smallest caliper width
   double major = 0.0;        // fitted ellipse: axis ratio from the second moments, area A
   double minor = 0.0;
-  double convex_area = 0.0;    // area of the convex hull of the section
+  double convex_area = 0.0;         // area of the convex hull of the section
+  double convex_perimeter = 0.0;    // perimeter of the convex hull of the section
 };
 
 // The plane through p with unit normal n (in-plane axes e1, e2, e1 x e2 = n) cuts the ntri

@@ -177,14 +177,15 @@ void ComputeCellProps::compute_array()
     row[MASS] = cells->mass(c);
     row[VOLUME] = cells->volume(c);
     row[AREA] = cells->area(c);
-    // P_T and pi from the first fix cell/turgor acting on the cell, else P_T measured as the fix
-    // would (the wall load under pair cell/wall's particle model, no offset) and pi = 0
+    // P_T of this step's state and pi from the first fix cell/turgor acting on the cell, else P_T
+    // measured as the fix would (the wall load under pair cell/wall's particle model, no offset)
+    // and pi = 0
     row[TURGOR] = cells->turgor(c);
     row[OSMOTIC] = 0.0;
     FixCellTurgor::Water water{0.0, 0.0, 0.0, 0.0, 0.0};
     for (auto *fix : turgor)
       if (fix->osmotic(cells->id(c), row[MASS], row[OSMOTIC])) {
-        fix->turgor(cells->id(c), row[TURGOR]);
+        fix->turgor(cells->id(c), cells->sph_turgor(c), row[TURGOR]);
         fix->water(cells->id(c), row[MASS], water);
         break;
       }

@@ -261,6 +261,7 @@ void ComputeCellShape::measure(int h, double *row)
   row[SOLIDITY] = s.convex_area > 0.0 ? s.area / s.convex_area : 0.0;
   row[COMPACTNESS] = s.feret > 0.0 ? sqrt(4.0 * s.area / MY_PI) / s.feret : 0.0;
   row[LOOPS] = s.loops;
+  row[HULLPERIMETER] = s.convex_perimeter;
 
   // wrinkling: wall area over the area of the convex hull of the wall atoms (each once)
   std::vector<std::pair<tagint, int>> vertex(3 * (size_t) nt);

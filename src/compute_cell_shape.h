@@ -43,6 +43,7 @@ class ComputeCellShape : public Compute {
     HULLAREA,
     WRINKLING,
     HULLFILL,
+    HULLPERIMETER,
     NCOLUMN
   };
 

@@ -779,14 +779,13 @@ double FixCellTurgor::offset_time() const
 double FixCellTurgor::flux_turgor(int c, TurgorState::Cell &s, bool advance)
 {
   const double psph = cells->sph_turgor(c);
-  s.turgor = psph;
   if (!cells->wall_measure()) return psph;
   const double gap = psph - cells->wall_turgor(c);
   const double window = offset_time();
   // offset <- offset + (N dt / tau) (P_SPH - P_W - offset), from 0: an exponential running mean
   if (advance) s.offset += std::min(1.0, every * update->dt / window) * (gap - s.offset);
-  s.turgor = psph - s.offset;
-  return s.turgor;
+  // P_T = P_SPH - D (doc/model.md §5.3)
+  return psph - s.offset;
 }
 
 /* ----------------------------------------------------------------------
@@ -831,15 +830,18 @@ bool FixCellTurgor::check_limit(int c, TurgorState::Cell &s, double turgor, doub
 }
 
 /* ----------------------------------------------------------------------
-   turgor P_T of a cell at the last evaluation (what drives its flux); false if this fix does not
-   act on the cell
+   turgor P_T of a cell at the state whose mean SPH pressure is psph (compute cell/props: the state
+   at its step, the masses of the last transfer applied): psph under the wall boundary, psph less
+   the offset D of the last evaluation under the particle model; false if this fix does not act on
+   the cell
 ------------------------------------------------------------------------- */
 
-bool FixCellTurgor::turgor(tagint cell, double &pt) const
+bool FixCellTurgor::turgor(tagint cell, double psph, double &pt) const
 {
   const TurgorState::Cell *s = state.find(cell);
   if (!s) return false;
-  pt = s->turgor;
+  // P_T = P_SPH (wall boundary), P_SPH - D (particle model) (doc/model.md §5.3)
+  pt = cells->wall_measure() ? psph - s->offset : psph;
   return true;
 }
 

@@ -68,7 +68,8 @@ class FixCellTurgor : public Fix, public CellWallStretch {
   };
 
   bool osmotic(tagint cell, double mass, double &pi) const;
-  bool turgor(tagint cell, double &pt) const;
+  // P_T at the state whose mean SPH pressure is psph (with the offset D of the last evaluation)
+  bool turgor(tagint cell, double psph, double &pt) const;
   bool water(tagint cell, double mass, Water &w) const;
   // the cells and their home ranks, where the per-cell state is kept (cell_registry.h)
   const CellRegistry &registry() const;

@@ -12,8 +12,8 @@
 
 using namespace LAMMPS_NS;
 
-// a cell's state moved between ranks at init: its restart values, turgor, psi_surface, rate
-static const int STATE_VALUES = 23;
+// a cell's state moved between ranks at init: its restart values, psi_surface, rate
+static const int STATE_VALUES = 22;
 static const int WALL_AT = 6 + TurgorAccel::NPROBE;    // where the wall's water begins
 
 /* ---------------------------------------------------------------------- */
@@ -45,18 +45,17 @@ void TurgorState::keep_home(const std::vector<double> &list, const CellRegistry 
     if (c >= 0 ? reg.home(c) == comm->me : comm->me == 0) {
       const double *v = &list[at];
       Cell &s = cells[(tagint) v[0]];
-      s = Cell{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, 0.0, {}};
+      s = Cell{v[1], v[2], (int) v[3], v[4], v[5], 0.0, 0.0, {}};
       std::copy(v + 6, v + 6 + TurgorAccel::NPROBE, s.probe);
       s.wall_dry = v[WALL_AT], s.wall_x0 = v[WALL_AT + 1], s.wall_x = v[WALL_AT + 2];
       s.wall_dx = v[WALL_AT + 3];
-      s.turgor = v[WALL_AT + 4];
-      s.psi_surface = v[WALL_AT + 5];
-      s.rate = v[WALL_AT + 6];
+      s.psi_surface = v[WALL_AT + 4];
+      s.rate = v[WALL_AT + 5];
     }
   }
   for (int c : reg.home_cells())
     if (cells.find(reg.id(c)) == cells.end()) {
-      cells[reg.id(c)] = Cell{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, {}};
+      cells[reg.id(c)] = Cell{0.0, pi0, 0, 0.0, 0.0, 0.0, 0.0, {}};
     }
 }
 
@@ -77,8 +76,8 @@ int TurgorState::gather_restart(int version, std::vector<double> &list) const
 
 /* ----------------------------------------------------------------------
    this rank's cell states, the current restart values each: ID, mass0, pi0, warned, offset,
-   solids, the accel auto sums, the wall's water; full: + the last evaluation's turgor, psi_surface
-   and rate
+   solids, the accel auto sums, the wall's water; full: + the last evaluation's psi_surface and
+   rate
 ------------------------------------------------------------------------- */
 
 void TurgorState::pack(std::vector<double> &list, bool full) const
@@ -90,7 +89,7 @@ void TurgorState::pack(std::vector<double> &list, bool full) const
                 {(double) kv.first, s.mass0, s.pi0, (double) s.warned, s.offset, s.solids});
     list.insert(list.end(), s.probe, s.probe + TurgorAccel::NPROBE);
     list.insert(list.end(), {s.wall_dry, s.wall_x0, s.wall_x, s.wall_dx});
-    if (full) list.insert(list.end(), {s.turgor, s.psi_surface, s.rate});
+    if (full) list.insert(list.end(), {s.psi_surface, s.rate});
   }
 }
 

@@ -26,7 +26,6 @@ class TurgorState : protected Pointers {
     int warned;                  // 1 once the limit-point warning was printed
     double offset;               // running mean of (mean SPH pressure - wall turgor) (Pa), from 0
     double solids;               // dry solids S (kg), 0 without 'solids'
-    double turgor;               // turgor P_T of the last evaluation (Pa), set again by setup()
     double psi_surface, rate;    // of the last evaluation (Pa, kg/s)
     double probe[TurgorAccel::NPROBE];    // accel auto: the cycle's sums
     // wallwater (0 without): dry wall mass (kg), the wall's moisture when first seen, in effect,
@@ -51,7 +50,7 @@ class TurgorState : protected Pointers {
   void swap_saved() { cells.swap(saved); }
 
   // every rank's cell states: with everywhere, their restart values and the last evaluation's
-  // turgor, psi_surface and rate on every rank (before the cells are found again at init)
+  // psi_surface and rate on every rank (before the cells are found again at init)
   void gather(bool everywhere, std::vector<double> &list) const;
   // keep the gathered cells whose home rank this is (rank 0: also cells no longer in the group);
   // home cells without a state begin one with osmotic pressure pi0

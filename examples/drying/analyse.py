@@ -3,7 +3,8 @@
 intersections_TAG.txt, log.TAG, wall_TAG.dump, fluid_TAG.dump), with the air, cooling and accel
 that ran read from the first line of dry_TAG.dat (in.drying writes it), the drying time, the
 turgor loss point, the section descriptors (the mean and spread of the sections x, y, z through
-the centroid) and volume at X/X0 = 0.5 and at the end against Karunasena et al. 2014 (dried Gala
+the centroid; the 13-plane means, with the perimeter of each section's convex hull: the outline
+that bridges the folds) and volume at X/X0 = 0.5 and at the end against Karunasena et al. 2014 (dried Gala
 apple: area -60 %, Feret -40 %, perimeter -30 %, roundness and elongation +5 %, compactness
 unchanged), the checks: fluid outside the wall, wall self-intersections, water accounting, and
 the fluid in tension (stability.TAG.txt, one line per snapshot): the nearest-neighbour distance of
@@ -154,9 +155,9 @@ def figures(tags, names):
     planes = [t for t in tags if os.path.exists(f"planes_{t}.txt")]
     stab = [t for t in tags if os.path.exists(f"stability_{t}.txt")]
 
-    def plane(col):
-        return "".join(f", 'planes_{t}.txt' using 1:{col} with lines dt 2 lw 3 lc {tags.index(t) + 1} "
-                       f"title '{names[t]}, 13 planes'" for t in planes)
+    def plane(col, what="13 planes", dt=2):
+        return "".join(f", 'planes_{t}.txt' using 1:{col} with lines dt {dt} lw 3 lc {tags.index(t) + 1} "
+                       f"title '{names[t]}, {what}'" for t in planes)
     gp = [
         "set terminal pngcairo size 1400,600 noenhanced font ',11'",
         "set output 'fig_drying_curve.png'",
@@ -175,8 +176,9 @@ def figures(tags, names):
         "set title 'section area (plane z; dashed: mean of 13 planes)'",
         "plot " + lines("'{f}' using 2:8 with lines lw 2 lc {lc} title '{n}'") + plane(2) + ", " +
         apple.format("-60 %", "0.2 0.4"),
-        "set title 'perimeter (plane z; dashed: mean of 13 planes)'",
-        "plot " + lines("'{f}' using 2:9 with lines lw 2 lc {lc} title '{n}'") + plane(3) + ", " +
+        "set title 'perimeter (plane z; dashed: mean of 13 planes; dotted: their convex hulls)'",
+        "plot " + lines("'{f}' using 2:9 with lines lw 2 lc {lc} title '{n}'") + plane(3) +
+        plane(5, "hull, 13 planes", 3) + ", " +
         apple.format("-30 %", "0.2 0.7"),
         "set title 'Feret diameter (plane z; dashed: mean of 13 planes)'",
         "plot " + lines("'{f}' using 2:10 with lines lw 2 lc {lc} title '{n}'") + plane(4) + ", " +
@@ -248,13 +250,15 @@ def main(tags):
         if series:
             # the 13-plane means per snapshot (planes_TAG.txt, for the figure) and at 0.5 and the end
             with open(f"planes_{tag}.txt", "w") as f:
-                f.write("# X/X0 then the mean over 13 planes of A/A0 P/P0 F/F0 (tools/section_planes.lmp)\n")
-                for step, a, p, fe in series:
+                f.write("# X/X0 then the mean over 13 planes of A/A0 P/P0 F/F0 H/H0 (H: the perimeter of "
+                        "the section's convex hull; tools/section_planes.lmp)\n")
+                for step, *values in series:
                     if step in xs:
-                        f.write("%.6f %.6f %.6f %.6f\n" % (xs[step], *(mean_se(v)[0] for v in (a, p, fe))))
+                        f.write("%.6f" % xs[step] + "".join(" %.6f" % mean_se(v)[0] for v in values) + "\n")
             mid, fin = at_x(series, xs, 0.5), at_x(series, xs, end["X"])
             if mid and fin:
-                for k, (key, name) in enumerate((("A", "section area"), ("P", "perimeter"), ("F", "Feret"))):
+                for k, (key, name) in enumerate((("A", "section area"), ("P", "perimeter"), ("F", "Feret"),
+                                                 ("P", "hull perimeter"))):
                     (hm, hs, _), (em, es, _) = mean_se(mid[k]), mean_se(fin[k])
                     print(f"  {name:16s}  {hm:.3f}±{hs:.3f}  {em:.3f}±{es:.3f}   {APPLE[key]:.2f}   13 planes")
         for key, name in (("round", "roundness"), ("elong", "elongation"), ("compact", "compactness")):
