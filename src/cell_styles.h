@@ -30,6 +30,10 @@ namespace CellField {
   constexpr const char *H = "h";                  // a fluid atom's smoothing length (adaptive h)
   constexpr const char *OMEGA = "omega";          // its grad-h correction
   constexpr const char *FIX = "cellsph";          // the fix property/atom holding rho to omega
+  // the wall boundary's linearisation base of each atom (pair_cell_sph_boundary.cpp)
+  constexpr const char *XBASE = "xbase";             // its position (3 values)
+  constexpr const char *HBASE = "hbase";             // its h (1 on non-fluid atoms)
+  constexpr const char *BASEFIX = "cellsph_base";    // the fix property/atom holding them
 }    // namespace CellField
 
 // a pair style that tallies the force of each cell's fluid on its wall atoms (doc/model.md §5.3)

@@ -17,6 +17,7 @@
 #include "compute_cell_shape.h"
 #include "dihedral_cell_bending.h"
 #include "fix_cell_bond_history.h"
+#include "fix_cell_continue.h"
 #include "fix_cell_pressure.h"
 #include "fix_cell_turgor.h"
 #include "pair_cell_sph.h"
@@ -63,6 +64,9 @@ const StyleEntry STYLES[] = {
      &create_v1<CellAtoms>, nullptr},
     {"fix", "cell/bond/history", "per-bond reference state of cellsph bond styles (internal)",
      nullptr, &create_v2<FixCellBondHistory>},
+    {"fix", "cell/continue",
+     "the last step's velocities for the forces of a run's setup that continues it (internal)",
+     nullptr, &create_v2<FixCellContinue>},
     {"fix", "cell/pressure", "imposed turgor pressure on closed cell walls", nullptr,
      &create_v2<FixCellPressure>},
     {"fix", "cell/turgor", "water transfer through the cell wall (turgor, osmosis, permeability)",

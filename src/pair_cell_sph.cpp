@@ -108,8 +108,15 @@ void PairCellSPH::compute(int eflag, int vflag)
     MPI_Allreduce(&fresh, &any, 1, MPI_INT, MPI_MAX, world);
     if (any && walls && hmode == HADAPTIVE) passes = HSTART;
   }
-  if (walls && wall.rebuilt) wall.split_list(neighbor->skin);
+  if (walls && wall.rebuilt) {
+    wall.split_list(neighbor->skin);
+    wall.search_contacts();
+    wall.rebase(peratom);
+  }
   for (int pass = 0; pass < passes; pass++) {
+    // a new base of the wall boundary takes the ghosts' h (store_base): theirs at the last
+    // iteration's h
+    ghost_h();
     if (walls) wall.start_pass(pass);
     density_pass(1);
     if (hmode == HADAPTIVE) solve_h();
@@ -142,6 +149,18 @@ void PairCellSPH::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
+   h adaptive: the ghosts' h and every atom's kernel constants at the h of the last iteration
+------------------------------------------------------------------------- */
+
+void PairCellSPH::ghost_h()
+{
+  if (!hstale) return;
+  forward(COMM_H);
+  kernel_scales();
+  hstale = 0;
+}
+
+/* ----------------------------------------------------------------------
    one density pass with the loop compiled for this kernel, with or without wall boundary,
    viscosity and per-atom h; first = 1: the step's first pass (with the wall boundary), 0: a
    Newton iteration of h adaptive (the sums only); then the ghost sums into owners
@@ -149,12 +168,7 @@ void PairCellSPH::compute(int eflag, int vflag)
 
 void PairCellSPH::density_pass(int first)
 {
-  // h adaptive: the ghosts' h and every atom's kernel constants at the h of the last iteration
-  if (hstale) {
-    forward(COMM_H);
-    kernel_scales();
-    hstale = 0;
-  }
+  ghost_h();
   // per-atom h grown beyond the split's allowance: split again (split_list)
   if (walls && hmode != HFIXED && wall.outgrown()) wall.split_list(2.0 * neighbor->skin);
   typedef void (PairCellSPH::*Loop)(int);
@@ -692,7 +706,7 @@ void *PairCellSPH::extract(const char *str, int &dim)
 int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD)
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD || commode == COMM_BASE)
     return wall.pack_forward(commode, n, list, buf);
   if (commode == COMM_H) {
     const double *hv = atom->dvector[ih];
@@ -719,7 +733,7 @@ int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD) {
+  if (commode == COMM_TRIANGLES || commode == COMM_AHEAD || commode == COMM_BASE) {
     wall.unpack_forward(commode, n, first, buf);
     return;
   }

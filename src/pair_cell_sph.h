@@ -135,6 +135,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
     COMM_LOAD,
     COMM_TRIANGLES,
     COMM_AHEAD,
+    COMM_BASE,
     COMM_JUMP
   } commode;
   void forward(int);      // a forward comm of this kind
@@ -149,7 +150,8 @@ class PairCellSPH : public Pair, public CellWallLoad {
     double grow = 1.5;       // grow (ignored: the neighbour range only)
     double lag = -1.0;       // background auto lag (s); < 0: not given
   };
-  void read_settings(FILE *, Removed &, std::string &, std::string &, double &);
+  void read_settings(FILE *, Removed &, std::string &, std::string &, double &,
+                     PairCellSPHBoundary::Schedule &);
   const char *removed_setting(const Removed &) const;
 
   double *prho2;     // P / rho^2 of owned and ghost fluid atoms
@@ -169,6 +171,7 @@ class PairCellSPH : public Pair, public CellWallLoad {
   void grow_peratom();
   void destroy_peratom();
   void density_pass(int);
+  void ghost_h();    // h adaptive: the ghosts' h sent again if owned h changed since
   template <int KERNEL, int PERATOM> void self_density();
   template <int KERNEL, int VISCOUS, int WALLS, int PERATOM> void sum_density(int);
   template <int KERNEL> void peratom_pair(double, double, double, double, double *, double *);

@@ -1,9 +1,12 @@
 /* ----------------------------------------------------------------------
    cellsph - SPH-DEM plant cells for LAMMPS
    the wall boundary of pair_style cell/sph, owned by PairCellSPH (pair_cell_sph_boundary.h). The
-   kernel completion 1 - gamma of every fluid atom is evaluated exactly at a neighbour build and
-   every REFRESH to REFRESH_MAX steps, from base positions half an interval ahead, and linearised
-   in the displacements in between (doc/pair_cell_sph.md, cost control).
+   kernel completion 1 - gamma of every fluid atom is evaluated exactly every REFRESH to
+   REFRESH_MAX steps (or when an atom moved half the skin from its base), from base positions half
+   an interval ahead, and linearised in the displacements in between (doc/pair_cell_sph.md, cost
+   control). The base goes with each atom (pair_cell_sph_boundary_base.cpp), so that a neighbour
+   build, a run's setup and a restart evaluate the same linearisation again at it: the state does
+   not depend on how the runs are split.
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_sph_boundary.h"
@@ -14,6 +17,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_cell_continue.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -28,11 +32,11 @@ using namespace LAMMPS_NS;
 
 // contact with the wall surface: range delta = h / CONTACT_H, force F_c = K delta^2 at contact
 static const double CONTACT_H = 2.5;
-// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval) and on
-// reneighbouring, linearised in between in the displacements from a base half an interval ahead
-// (base_positions)
+// kernel completion evaluated exactly every REFRESH to REFRESH_MAX steps (next_interval),
+// linearised in between in the displacements from a base half an interval ahead (base_positions)
 static const int REFRESH = 20;
 static const int REFRESH_MAX = 320;
+// and as soon as an atom is half the skin from its base (pair_cell_sph_boundary_base.cpp)
 // the largest jump of 1 - gamma of a fluid atom at an exact evaluation that lets the interval grow
 // (doc/pair_cell_sph.md, cost control: 1e-6 is 20 Pa of pressure at K = 20 MPa)
 static const double JUMP_TOL = 1e-6;
@@ -48,9 +52,9 @@ PairCellSPHBoundary::PairCellSPHBoundary(LAMMPS *lmp, PairCellSPH *owner) :
     Pointers(lmp), deficit(nullptr), dhdef(nullptr), wallload(nullptr), refreshing(1), rebuilt(1),
     every(REFRESH), lastjump(0.0), sph(owner), pairs(nullptr), wallsupport(0.0), phidq(0.0),
     tris(new CellWallTriangles(lmp, "Pair cell/sph", "the wall boundary's neighbour range")),
-    deficit0(nullptr), dhdef0(nullptr), hbase(nullptr), xbase(nullptr), gradsum(nullptr),
-    disp(nullptr), jump(nullptr), xnear(nullptr), slot(nullptr), predicted(0), measuring(0),
-    pending(REFRESH), refreshed(-1), nmax(0)
+    deficit0(nullptr), dhdef0(nullptr), hbase(nullptr), xbase(nullptr), ixfield(-1), ihfield(-1),
+    gradsum(nullptr), disp(nullptr), jump(nullptr), xnear(nullptr), slot(nullptr), predicted(0),
+    measuring(0), rebasing(0), reached(0), pending(REFRESH), refreshed(-1), nmax(0)
 {
 }
 
@@ -122,6 +126,7 @@ void PairCellSPHBoundary::init()
     for (int j = 0; j <= n; j++) pairs[i][j] = Contact{0.0, 0.0, 0.0, 0.0, 0};
   tabulate_phi();
   tris->start_run();
+  find_fields();
 }
 
 /* ----------------------------------------------------------------------
@@ -179,8 +184,8 @@ void PairCellSPHBoundary::grow(int n, int peratom)
   if (peratom) {
     memory->create(dhdef, nmax, "pair:dhdef");
     memory->create(dhdef0, nmax, "pair:dhdef0");
-    memory->create(hbase, nmax, "pair:hbase");
   }
+  memory->create(hbase, nmax, "pair:hbase");
   memory->create(deficit, nmax, "pair:deficit");
   memory->create(wallload, nmax, 3, "pair:wallload");
   tris->grow(nmax);
@@ -195,13 +200,21 @@ void PairCellSPHBoundary::grow(int n, int peratom)
 }
 
 /* ----------------------------------------------------------------------
-   a step's start: the triangles at a neighbour build (or after the per-atom arrays grew), and
-   whether this step evaluates the boundary exactly
+   a step's start: the triangles and the base of ghost atoms at a neighbour build (or after the
+   per-atom arrays grew), and whether this step evaluates the boundary exactly at a new base: by
+   the step counter and the interval only (a build or a run's setup that continues the last step
+   evaluates the last base again, rebase), when an atom moved beyond reach of its base, or at a
+   setup that does not continue the last step
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::start_step(bool grown)
 {
   rebuilt = neighbor->ago == 0 || grown;
+  const bigint now = update->ntimestep;
+  // a setup that does not continue the last step (atoms moved or velocities set since, a
+  // minimisation, a first run) starts afresh: exact, the interval at REFRESH
+  const int fresh = update->setupflag && !FixCellContinue::setup_continues(lmp);
+  const int based = refreshed >= 0 && now >= refreshed && !fresh;
   if (rebuilt) {
     tris->build();
     // a triangle whose centroid is within the support of f until the next build has its
@@ -209,15 +222,17 @@ void PairCellSPHBoundary::start_step(bool grown)
     // distance grows by < skin (doc/pair_cell_sph.md, Restrictions)
     tris->check_ghost_cutoff("the kernel support", wallsupport, 1, 2);
     sph->forward(PairCellSPH::COMM_TRIANGLES);
+    if (based) restore_base();
   }
-  if (update->setupflag) {
-    every = pending = REFRESH;
-    lastjump = 0.0;
-  }
-  refreshing = rebuilt || update->ntimestep - refreshed >= every || update->ntimestep < refreshed;
-  measuring = refreshing && !rebuilt;
+  // an atom beyond reach of its base moves too fast for the base ahead (base_positions): the
+  // new base at the atoms, as a neighbour build took it before the base went with each atom
+  reached = based && beyond_reach();
+  refreshing = !based || now - refreshed >= every || reached;
+  measuring = refreshing && based;
+  rebasing = rebuilt && based;
   if (refreshing) {
-    refreshed = update->ntimestep;
+    if (!based) every = pending = REFRESH, lastjump = 0.0;
+    refreshed = now;
     every = pending;
   }
 }
@@ -225,13 +240,13 @@ void PairCellSPHBoundary::start_step(bool grown)
 /* ----------------------------------------------------------------------
    before density pass number pass of a step: a pass after the first evaluates exactly again (at
    the converged h of h adaptive); the base ahead in dynamics only (a minimisation's velocities
-   are not its motion)
+   are not its motion) and not after an atom went beyond reach
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::start_pass(int pass)
 {
   if (pass > 0) refreshing = 1, measuring = 0;
-  if (refreshing) base_positions(!rebuilt && pass == 0 && update->whichflag == 1);
+  if (refreshing) base_positions(pass == 0 && update->whichflag == 1 && !reached);
 }
 
 /* ----------------------------------------------------------------------
@@ -249,15 +264,14 @@ void PairCellSPHBoundary::start_sums(int peratom)
       for (int i = 0; i < nall; i++) dhdef[i] = 0.0;
     terms.clear();
     termlen.clear();
-    if (rebuilt) touching.clear();
   } else {
     linear_deficit();
   }
 }
 
 /* ----------------------------------------------------------------------
-   the wall boundary, exactly on this step: the triangles kept by wall atom b for fluid atom f,
-   the pairs of each f in a row (split_list)
+   the wall boundary, exactly at the base positions: the triangles kept by wall atom b for fluid
+   atom f, the pairs of each f in a row (split_list)
 ------------------------------------------------------------------------- */
 
 void PairCellSPHBoundary::exact_terms(int peratom)
@@ -318,8 +332,10 @@ int PairCellSPHBoundary::pack_forward(int mode, int n, int *list, double *buf)
 {
   if (mode == PairCellSPH::COMM_TRIANGLES) return tris->pack(n, list, buf);
   int m = 0;
-  for (int k = 0; k < n; k++)
+  for (int k = 0; k < n; k++) {
     for (int d = 0; d < 3; d++) buf[m++] = disp[list[k]][d];
+    if (mode == PairCellSPH::COMM_BASE) buf[m++] = hbase[list[k]];
+  }
   return m;
 }
 
@@ -330,8 +346,10 @@ void PairCellSPHBoundary::unpack_forward(int mode, int n, int first, double *buf
     return;
   }
   int m = 0;
-  for (int i = first; i < first + n; i++)
+  for (int i = first; i < first + n; i++) {
     for (int d = 0; d < 3; d++) disp[i][d] = buf[m++];
+    if (mode == PairCellSPH::COMM_BASE) hbase[i] = buf[m++];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -365,8 +383,8 @@ void PairCellSPHBoundary::unpack_reverse(int mode, int n, int *list, double *buf
 
 double PairCellSPHBoundary::memory_usage(int peratom)
 {
-  double bytes = peratom ? nmax * 3.0 * sizeof(double) : 0.0;
-  bytes += nmax * (14.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
+  double bytes = peratom ? nmax * 2.0 * sizeof(double) : 0.0;
+  bytes += nmax * (15.0 * sizeof(double) + 2.0 * sizeof(int)) + tris->memory_usage() +
       terms.capacity() * sizeof(Term) + termlen.capacity() * sizeof(double) +
       (touching.capacity() + near.capacity()) * sizeof(touching[0]) +
       fluidfirst.capacity() * sizeof(int) + fluidj.capacity() * sizeof(int) +
@@ -376,8 +394,8 @@ double PairCellSPHBoundary::memory_usage(int peratom)
 
 /* ----------------------------------------------------------------------
    the terms of fluid atom f with the triangles (a, b, c) kept by wall atom b of its own cell:
-   kernel deficit and its gradient, summed per vertex into terms (slot[v]: v's term of f, with
-   |x_v - x_f| in termlen), and at a neighbour build the contact candidates
+   kernel deficit and its gradient at the base, summed per vertex into terms (slot[v]: v's term of
+   f, with |x_v - x_f| in termlen)
 ------------------------------------------------------------------------- */
 
 template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, const Contact &p)
@@ -385,8 +403,6 @@ template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, co
   double **x = xbase;
   const double *xf = x[f];
   const double support = CellKernel::support(sph->kernel);
-  const double touch = p.reach + neighbor->skin;
-  const double edgemax = tris->edge_max();
   for (int t = tris->first(b); t < tris->first(b) + tris->count(b); t++) {
     const int a = tris->a(t), c = tris->c(t);
     // a vertex missing on this rank is beyond the ghost cutoff: the triangle is beyond the support
@@ -397,7 +413,7 @@ template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, co
     const double g[3] = {(ra[0] + rb[0] + rc[0]) / 3.0, (ra[1] + rb[1] + rc[1]) / 3.0,
                          (ra[2] + rb[2] + rc[2]) / 3.0};
     const double gl = sqrt(CellTriangle::dot(g, g));
-    const double invh = PERATOM ? sph->hscale[f][0] : p.invh;
+    const double invh = PERATOM ? 1.0 / hbase[f] : p.invh;
     const double q = gl * invh;
     if (q >= support) continue;
     const int vert[3] = {a, b, c};
@@ -428,12 +444,6 @@ template <int PERATOM> void PairCellSPHBoundary::boundary_terms(int f, int b, co
     const double co = ph / (4.0 * M_PI);
     for (int v = 0; v < 3; v++)
       for (int d = 0; d < 3; d++) terms[s[v]].grad[d] += cg * g[d] + co * dom[v][d];
-    // contact candidates until the next neighbour build: every atom moves less than skin/2
-    if (rebuilt && gl < touch + 2.0 / 3.0 * edgemax) {
-      const CellTriangle::Foot ft = CellTriangle::closest(xf, x[a], x[b], x[c]);
-      const double e[3] = {xf[0] - ft.p[0], xf[1] - ft.p[1], xf[2] - ft.p[2]};
-      if (CellTriangle::dot(e, e) < touch * touch) touching.push_back({f, a, b, c});
-    }
   }
 }
 
@@ -541,6 +551,7 @@ void PairCellSPHBoundary::base_positions(int ahead)
   if (!predicted) {
     for (int i = 0; i < nall; i++)
       for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d];
+    store_base();
     return;
   }
   double **v = atom->v;
@@ -554,6 +565,7 @@ void PairCellSPHBoundary::base_positions(int ahead)
   sph->forward(PairCellSPH::COMM_AHEAD);
   for (int i = 0; i < nall; i++)
     for (int d = 0; d < 3; d++) xbase[i][d] = x[i][d] + disp[i][d];
+  store_base();
 }
 
 /* ----------------------------------------------------------------------
@@ -603,13 +615,8 @@ void PairCellSPHBoundary::keep_base()
   }
   for (const Term &tm : terms)
     for (int d = 0; d < 3; d++) gradsum[tm.f][d] += tm.grad[d];
-  if (sph->hmode != PairCellSPH::HFIXED) {
-    const double *hv = atom->dvector[sph->ih];
-    for (int i = 0; i < nall; i++) {
-      dhdef0[i] = dhdef[i];
-      hbase[i] = hv[i];
-    }
-  }
+  if (sph->hmode != PairCellSPH::HFIXED)
+    for (int i = 0; i < nall; i++) dhdef0[i] = dhdef[i];
 }
 
 /* ----------------------------------------------------------------------

@@ -27,6 +27,7 @@ class PairCellSPHBoundary : protected Pointers {
 
   // init_style: the checks, the longest support, the table of Phi, the triangles' edge allowance
   void init();
+  void find_fields();
   // init_one of fluid-wall type pair i j: its constants; returns its neighbour range
   double init_pair(int, int);
   void allocate(int);     // per type pair constants for ntypes + 1
@@ -34,8 +35,11 @@ class PairCellSPHBoundary : protected Pointers {
   void destroy();
 
   // compute(): at a step's start (the triangles at a neighbour build, the schedule of exact
-  // evaluations), each density pass's base positions, the sums' start and the exact evaluation
+  // evaluations), after a build the linearisation again from its base (rebase) and the contact
+  // candidates, each density pass's base positions, the sums' start and the exact evaluation
   void start_step(bool grown);
+  void rebase(int peratom);
+  void search_contacts();
   void start_pass(int pass);
   void start_sums(int peratom);
   void exact_terms(int peratom);
@@ -45,6 +49,16 @@ class PairCellSPHBoundary : protected Pointers {
   void linear_deficit();
   // the wall term, the contacts and the background pressure, into f and the wall load
   void forces(int evflag);
+
+  // the schedule of exact evaluations, kept over runs and in the pair's restart data
+  struct Schedule {
+    bigint refreshed;    // step of the last exact evaluation, -1: no base yet
+    int every;           // steps from it to the next
+    int pending;         // steps from the next to the one after
+    double lastjump;     // largest jump of 1 - gamma at the last measurement
+  };
+  Schedule schedule() const { return {refreshed, every, pending, lastjump}; }
+  void resume(const Schedule &);
 
   int pack_forward(int mode, int, int *, double *);
   void unpack_forward(int mode, int, int, double *);
@@ -57,7 +71,7 @@ class PairCellSPHBoundary : protected Pointers {
   double *deficit;                             // 1 - gamma_i of fluid atom i
   double *dhdef;                               // per-atom h: d(1 - gamma_i)/dh_i
   double **wallload;    // force of the cell's own fluid on wall atom w through the boundary
-  int refreshing;       // 1 if this step evaluates the kernel completion exactly
+  int refreshing;       // 1 if this step evaluates the kernel completion exactly at a new base
   int rebuilt;          // 1 on a neighbour build: contact candidates are searched
   int every;            // steps to the next exact evaluation
   double lastjump;      // largest jump of 1 - gamma (all ranks) at the last measurement
@@ -88,16 +102,21 @@ class PairCellSPHBoundary : protected Pointers {
   std::vector<double> termlen;    // |x_v - x_f| of each term at the exact evaluation (scratch)
   double *deficit0;               // 1 - gamma at the last exact evaluation (partial sums per rank)
   double *dhdef0;                 // per-atom h: d(1 - gamma)/dh at the last exact evaluation
-  double *hbase;                  // per-atom h: h at the last exact evaluation
+  double *hbase;                  // h at the last exact evaluation (fluid atoms; 1 on others)
   double **xbase;                 // positions of the last exact evaluation (base_positions)
-  double **gradsum;               // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
-  double **disp;                  // x - xbase; in base_positions() the step to the base
-  double *jump;                   // change of 1 - gamma at an exact evaluation (partial per rank)
-  double **xnear;                 // positions when the near contact candidates were taken
+  // the base of owned atoms, kept with each atom in fix FIELDS (property/atom: it migrates, is
+  // sorted and goes into restart files): x (3 values) and h, as in xbase and hbase
+  int ixfield, ihfield;
+  double **gradsum;              // sum_v grad_v D_f of fluid atom f's terms (= -grad_f D_f)
+  double **disp;                 // x - xbase; in base_positions() the step to the base
+  double *jump;                  // change of 1 - gamma at an exact evaluation (partial per rank)
+  double **xnear;                // positions when the near contact candidates were taken
   std::vector<int> termfirst;    // terms of fluid atom f: terms[termfirst[f]] .. [termfirst[f+1]-1]
   int *slot;                     // the term of vertex v of the fluid atom being evaluated, else -1
   int predicted;                 // 1 if the last exact evaluation's base is ahead of the atoms
   int measuring;                 // 1 if this exact evaluation measures the jump (next_interval)
+  int rebasing;                  // 1 at a build with a base: the linearisation evaluated again
+  int reached;                   // 1 if an owned atom is beyond reach of its base (beyond_reach)
   int pending;                   // steps from the next exact evaluation to the one after
   bigint refreshed;              // step of the last exact evaluation
   std::vector<std::array<int, 4>> touching;    // fluid atom and triangle that may be in contact
@@ -108,6 +127,9 @@ class PairCellSPHBoundary : protected Pointers {
 
   template <int PERATOM> void boundary_terms(int, int, const Contact &);
   void base_positions(int);
+  void store_base();
+  void restore_base();
+  bool beyond_reach();
   void keep_base();
   void next_interval();
   template <int EVFLAG> void wall_forces();

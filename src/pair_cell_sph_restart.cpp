@@ -23,8 +23,9 @@ using namespace LAMMPS_NS;
 // 4: the temperature of the viscosity (temp, Tref); 5: shift; 6: tensile (eps, n, dp); 7: the
 // wall boundary's adhesion W per type pair; 8: grow; 9: background; 10: background auto lag;
 // 11: background auto's P_b now; 12: without the removed eos, Tref, shift, tensile, adhesion W,
-// grow and lag (read_settings reads them from older files)
-static const int RESTART_VERSION = 12;
+// grow and lag (read_settings reads them from older files); 13: the wall boundary's schedule of
+// exact evaluations (the base itself is per atom, in fix cellsph_base)
+static const int RESTART_VERSION = 13;
 // the last version of a setting still written
 static const int WRITTEN = INT_MAX;
 
@@ -119,6 +120,13 @@ void PairCellSPH::write_restart_settings(FILE *fp)
   fwrite(&background_min, sizeof(double), 1, fp);
   fwrite(&background, sizeof(double), 1, fp);
   fwrite(&background_set, sizeof(int), 1, fp);
+  // the wall boundary's schedule (pair_cell_sph_boundary.h), none without it
+  const PairCellSPHBoundary::Schedule sched =
+      walls ? wall.schedule() : PairCellSPHBoundary::Schedule{-1, 0, 0, 0.0};
+  fwrite(&sched.refreshed, sizeof(bigint), 1, fp);
+  fwrite(&sched.every, sizeof(int), 1, fp);
+  fwrite(&sched.pending, sizeof(int), 1, fp);
+  fwrite(&sched.lastjump, sizeof(double), 1, fp);
 }
 
 /* ----------------------------------------------------------------------
@@ -128,7 +136,7 @@ void PairCellSPH::write_restart_settings(FILE *fp)
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::read_settings(FILE *fp, Removed &old, std::string &name, std::string &bname,
-                                double &pb)
+                                double &pb, PairCellSPHBoundary::Schedule &sched)
 {
   const auto get = [&](auto *value, int n = 1) {
     utils::sfread(FLERR, value, sizeof(*value), n, fp, nullptr, error);
@@ -167,6 +175,10 @@ void PairCellSPH::read_settings(FILE *fp, Removed &old, std::string &name, std::
       {10, 11, [&] { get(&old.lag); }},
       {11, WRITTEN, [&] { get(&pb); }},
       {11, WRITTEN, [&] { get(&background_set); }},
+      {13, WRITTEN, [&] { get(&sched.refreshed); }},
+      {13, WRITTEN, [&] { get(&sched.every); }},
+      {13, WRITTEN, [&] { get(&sched.pending); }},
+      {13, WRITTEN, [&] { get(&sched.lastjump); }},
   };
   for (const auto &field : fields)
     if (restart_version >= field.first && restart_version <= field.last) field.read();
@@ -197,6 +209,7 @@ void PairCellSPH::read_restart_settings(FILE *fp)
   Removed old;
   std::string name, bname;
   double pb = 0.0;
+  PairCellSPHBoundary::Schedule sched{-1, 0, 0, 0.0};
   hmode = HFIXED;
   eta = 0.0;
   temp_set = 0;
@@ -210,7 +223,7 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     restart_version = CellRestart::version(first);
     if (first < 0) utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
     kernel = first;
-    read_settings(fp, old, name, bname, pb);
+    read_settings(fp, old, name, bname, pb, sched);
   }
   MPI_Bcast(&restart_version, 1, MPI_INT, 0, world);
   CellRestart::refuse_newer(error, FLERR, "Pair cell/sph", restart_version, RESTART_VERSION);
@@ -239,6 +252,12 @@ void PairCellSPH::read_restart_settings(FILE *fp)
     str->resize(n);
     if (n > 0) MPI_Bcast(&(*str)[0], n, MPI_CHAR, 0, world);
   }
+  MPI_Bcast(&sched.refreshed, 1, MPI_LMP_BIGINT, 0, world);
+  int ints[2] = {sched.every, sched.pending};
+  MPI_Bcast(ints, 2, MPI_INT, 0, world);
+  MPI_Bcast(&sched.lastjump, 1, MPI_DOUBLE, 0, world);
+  sched.every = ints[0], sched.pending = ints[1];
+  wall.resume(sched);
   temp.name = name;
   background_in.name = bname;
   temp.ivar = -1;

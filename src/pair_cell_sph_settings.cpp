@@ -17,6 +17,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_cell_continue.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -409,6 +410,8 @@ void PairCellSPH::init_style()
                "'comm_modify vel yes'");
 
   check_masses();
+  // a run's setup that continues the last step: its velocities for the viscous forces
+  FixCellContinue::ensure(lmp);
   CellCompat::request_list(neighbor, this, instance_me, CellCompat::REQ_DEFAULT);
 }
 

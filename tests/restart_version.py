@@ -6,9 +6,10 @@
                                                the layout written before versions (version 1)
   restart_version.py IN OUT older cell/turgor  the fix cell/turgor payload in the layout of
                                                version 2 (5 values per cell: no dry solids)
-  restart_version.py IN OUT older cell/sph [11|5 [NAME=VALUE...]]
-                                               the pair cell/sph payload of version 12 in the
-                                               layout of version 11 (default) or 5, with the
+  restart_version.py IN OUT older cell/sph [12|11|5 [NAME=VALUE...]]
+                                               the pair cell/sph payload of version 13 in the
+                                               layout of version 12 (no wall boundary schedule),
+                                               11 (default) or 5, with the
                                                settings of the keywords removed in version 12
                                                (NAME: eos, hmode, tref, shift, tensile, grow, lag,
                                                adhesion; default: off)
@@ -102,18 +103,19 @@ def bending_to_version1(data, at):
 
 
 def sph_to_older(data, at, version, target, removed):
-    """Write the version-12 pair cell/sph payload whose marker is at offset at in the layout of
-    version target (11 or 5), with the settings of the keywords removed in version 12 from removed
+    """Write the version-13 pair cell/sph payload whose marker is at offset at in the layout of
+    version target (12, 11 or 5), with the settings of the keywords removed in version 12 from removed
     (NAME=VALUE: eos 0 linear / 1 tait, hmode 0 / 1 mass / 2, tref, shift, tensile, grow, lag,
     adhesion; default: all off). Version 12, after the marker: kernel (int), cutoff (double), hmode
     (int), eta (double), temp flag (int), T (double), name length (int), name, background P_b
     (double), its name's length (int) and name, auto flag (int), P_min, P_b now (double), whether it
-    is set (int); then per type pair I <= J setflag (int) and if set boundary (int), rho0, K, mu, h
-    (double). Version 11 has eos (int) after the kernel, Tref after T, shift, tensile eps (double),
+    is set (int), the wall boundary's schedule (last exact step: int64, interval, next interval:
+    int, last jump: double); then per type pair I <= J setflag (int) and if set boundary (int),
+    rho0, K, mu, h (double). Version 12 lacks the schedule. Version 11 has eos (int) after the kernel, Tref after T, shift, tensile eps (double),
     n (int), dp, grow (double) after the name, the lag (double) after P_min, and each set pair's
     adhesion W (double) after h; version 5 ends after shift (no background) with no W."""
-    if version != 12:
-        sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 12")
+    if version != 13:
+        sys.exit(f"restart_version.py: cell/sph payload version {version}, expected 13")
     old = {"eos": 0, "hmode": None, "tref": 298.15, "shift": 0.0, "tensile": 0.0, "grow": 1.5,
            "lag": -1.0, "adhesion": 0.0}
     for item in removed:
@@ -128,6 +130,12 @@ def sph_to_older(data, at, version, target, removed):
     pos += 12 + blen
     bauto, pmin, pbnow, bset = struct.unpack_from("=iddi", data, pos)
     pos += struct.calcsize("=iddi")
+    schedule = struct.calcsize("=qiid")
+    if target == 12:    # the current layout without the schedule
+        del data[pos:pos + schedule]
+        struct.pack_into("=i", data, at, -12)
+        return
+    pos += schedule
     hmode = int(old["hmode"]) if old["hmode"] is not None else hmode
     out = struct.pack("=iiididid", -target, kernel, int(old["eos"]), cut, hmode, eta, tflag, temp)
     out += struct.pack("=d", old["tref"]) + struct.pack("=i", length) + name
