@@ -19,12 +19,12 @@ if [ "$np" = 1 ]; then run=("$build/bin/lmp"); else run=(mpirun -np "$np" "$buil
 "${run[@]}" -in "$here/in.sealed_cell" -log log.lammps \
   >screen.log
 # the pictures (tools/cut_picture.py): the section through the centre by the plane z, the wall's
-# outline, the fluid within 5 um coloured by its SPH pressure P_i, a scale bar; the time, P_T and
+# outline, the fluid within 5 um coloured by its SPH pressure P_i, a scale bar; the time, P_W and
 # the area stretch of sealed_cell.dat at that step (dt = 1e-8 s) in the title
 last=$(awk '/^ITEM: TIMESTEP/ { getline; s = $1 } END { print s }' wall.dump)
 for pick in "watered 10000" "final $last"; do
   set -- $pick
-  state=$(awk -v t="$2" '!/^#/ && ($1 - t * 1e-8)^2 < 1e-24 { printf "t = %.2f ms, P_T = %.1f kPa, area stretch %.4f", $1 * 1e3, $2 / 1e3, $3; exit }' sealed_cell.dat)
+  state=$(awk -v t="$2" '!/^#/ && ($1 - t * 1e-8)^2 < 1e-24 { printf "t = %.2f ms, P_W = %.1f kPa, area stretch %.4f", $1 * 1e3, $2 / 1e3, $3; exit }' sealed_cell.dat)
   python3 "$here/../../tools/cut_picture.py" cell.data wall.dump --fluid fluid.dump --step "$2" \
     --color c_pp --cscale 1e-3 --crange 0:400 --clabel "SPH pressure P_i (kPa)" --slab 5e-6 \
     --frame 200e-6 --bar 50e-6 --title "Sealed cell, $1: $state" --out "cut_$1.png"
@@ -39,17 +39,17 @@ set xlabel 'time (ms)'
 set ylabel 'pressure (kPa)'
 set yrange [-50:450]
 set key top right
-plot 'sealed_cell.dat' using ($1*1e3):($2/1e3) with lines lw 2 title 'turgor P_T (load of the fluid on the wall)', \
+plot 'sealed_cell.dat' using ($1*1e3):($2/1e3) with lines lw 2 title 'wall load P_W (load of the fluid on the wall)', \
      '' using ($1*1e3):($5/1e3) with lines lw 2 title 'membrane law P(lam), lam = sqrt(A / A0)', \
      '' using ($1*1e3):($6/1e3) with lines dt 2 lw 2 title 'Laplace 2T/R of the wall tension', \
-     '' using ($1*1e3):($9/1e3) with lines lw 1 title 'mean SPH pressure', \
+     '' using ($1*1e3):($9/1e3) with lines lw 1 title 'turgor P_T (mean SPH pressure)', \
      '' using ($1*1e3):($7/1e3) with lines lw 1 title 'interior SPH pressure (deeper than 2h)'
 set ylabel 'relative to P_law(lam) (%)'
 set yrange [-50:40]
 set key bottom right
-plot 'sealed_cell.dat' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($2/$5-1)) with lines lw 2 title 'P_T / P_law - 1', \
+plot 'sealed_cell.dat' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($2/$5-1)) with lines lw 2 title 'P_W / P_law - 1', \
      '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($6/$5-1)) with lines dt 2 lw 2 title '2T/R / P_law - 1 (the wall)', \
-     '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($9/$5-1)) with lines lw 1 title 'P_SPH / P_law - 1', \
+     '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($9/$5-1)) with lines lw 1 title 'P_T / P_law - 1 (mean SPH pressure)', \
      '' using ($1 > 1e-4 ? $1*1e3 : 1/0):(100*($7/$5-1)) with lines lw 1 title 'P_interior / P_law - 1', \
      0 with lines lc rgb 'black' notitle
 set yrange [*:*]
