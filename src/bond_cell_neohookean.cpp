@@ -289,7 +289,8 @@ void BondCellNeoHookean::init_style()
   if (ixref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Bond style cell/neohookean needs per-atom reference positions: add "
-               "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
+               "'fix <ID> all property/atom d2_xref 3 ghost yes' (or 'cell/atoms') before "
+               "read_data");
 
   iaref = atom->find_custom(CellField::AREF, flag, cols);
   if (iaref >= 0 && (flag != 1 || cols != 0))

@@ -113,7 +113,7 @@ void CellSet::init_fluid(const std::string &who)
   if (!atom->rmass)
     error->all(FLERR,
                "{}: needs per-atom masses: add 'fix cellatoms all property/atom rmass d2_xref 3 "
-               "d_aref ghost yes' before read_data",
+               "d_aref ghost yes' (or 'cell/atoms') before read_data",
                who);
   irho = custom_vector(CellField::RHO, who);
   ipressure = custom_vector(CellField::PRESSURE, who);

@@ -329,7 +329,8 @@ void DihedralCellBending::init_style()
   if (ixref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Dihedral style cell/bending needs per-atom reference positions: add "
-               "'fix <ID> all property/atom d2_xref 3 ghost yes' before read_data");
+               "'fix <ID> all property/atom d2_xref 3 ghost yes' (or 'cell/atoms') before "
+               "read_data");
   // kappa = G t0^3 / 3: thin incompressible shell, E = 3 G, nu = 1/2 (doc/model.md §4.2)
   for (int i = 1; i <= atom->ndihedraltypes; i++)
     kappa[i] = shear[i] * thickness[i] * thickness[i] * thickness[i] / 3.0;

@@ -318,8 +318,8 @@ void PairCellSPH::find_fields()
   if (!atom->rmass_flag)
     error->all(FLERR,
                "Pair style cell/sph needs per-atom masses (rmass), which atom_style {} does not "
-               "have: add 'fix cellatoms all property/atom rmass d2_xref 3 ghost yes' before "
-               "read_data",
+               "have: add 'fix cellatoms all property/atom rmass d2_xref 3 ghost yes' (or "
+               "'cell/atoms') before read_data",
                atom->atom_style);
   int flag, cols;
   irho = atom->find_custom(CellField::RHO, flag, cols);
