@@ -599,9 +599,8 @@ template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
       double fz = delz * fpress;
       if (VISCOUS) {
         // F^v_i = m_i m_j (mu_i + mu_j) v_ij / (rho_i rho_j) (1/r) dW/dr (doc/model.md §3.5), per-atom
-        // h with the mean of the two kernels' gradients
-        const double fvisc =
-            PERATOM ? pairmu[k] * gsum * rhoinvi * rhoinv[j] : pairmu[k] * rhoinvi * rhoinv[j];
+        // h with the mean of the two kernels' gradients (gsum = 1 at fixed h: exact)
+        const double fvisc = pairmu[k] * gsum * rhoinvi * rhoinv[j];
         fx += (vxtmp - v[j][0]) * fvisc;
         fy += (vytmp - v[j][1]) * fvisc;
         fz += (vztmp - v[j][2]) * fvisc;
@@ -628,8 +627,10 @@ template <int KERNEL, int VISCOUS, int EVFLAG> void PairCellSPH::sum_forces()
 
 void PairCellSPH::forces(int peratom)
 {
-  if (peratom && hstale) kernel_scales();
-  if (peratom) hstale = 0;
+  if (peratom) {
+    if (hstale) kernel_scales();
+    hstale = 0;
+  }
   typedef void (PairCellSPH::*Loop)();
 #define CELLSPH_FORCES(K)                                                   \
   {                                                                         \
